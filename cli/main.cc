@@ -3,11 +3,15 @@
 // Exit codes: 0 success; 1 a command failed (one-line reason on stderr); 2 bad usage (unknown subcommand or flag,
 // usage printed on stderr).
 
+#include <algorithm>
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "cairn/common/text_suggestions.h"
 #include "cairn/version.h"
 #include "command_registry.h"
 
@@ -19,6 +23,17 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "cairn " CAIRN_VERSION_STRING);
   app.require_subcommand(1);
   const auto bound = registry.BindTo(app);
+
+  // CLI11 reports a mistyped subcommand as a missing one; name it and suggest the closest instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::vector<std::string> names = registry.names();
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::cerr << "cairn: unknown subcommand '" << argv[1] << "'; did you mean "
+                << cairn::QuotedList(cairn::ClosestNames(argv[1], names, 1)) << "?\n\n"
+                << app.help();
+      return 2;
+    }
+  }
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Configures and builds Cairn (RelWithDebInfo; Ninja and ccache when present), installing Debian packages first
+# when any is missing.
+#   scripts/build.sh [--sanitize]     --sanitize: AddressSanitizer + UndefinedBehaviorSanitizer, in build-sanitize/
+# Prints the build folder's path as its last line.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+sanitize=OFF
+build_dir="$root/build"
+for arg in "$@"; do
+  case "$arg" in
+    --sanitize) sanitize=ON; build_dir="$root/build-sanitize" ;;
+    *) echo "build.sh: unknown option '$arg' (known: --sanitize)" >&2; exit 2 ;;
+  esac
+done
+
+"$root/scripts/install_deps.sh" >&2
+
+generator=()
+if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
+if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCAIRN_SANITIZE="$sanitize" >&2
+else
+  cmake "$build_dir" -DCAIRN_SANITIZE="$sanitize" >&2
+fi
+cmake --build "$build_dir" --parallel "$(nproc)" >&2
+echo "$build_dir"

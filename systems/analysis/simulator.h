@@ -1,0 +1,107 @@
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cairn/systems/analysis/integrator_base.h"
+#include "cairn/systems/framework/context.h"
+#include "cairn/systems/framework/event_dispatch.h"
+#include "cairn/systems/framework/system.h"
+
+namespace cairn::systems {
+
+/// What a simulator monitor decides after a step.
+struct MonitorResult {
+  bool stop{false};
+  std::string reason;
+  static MonitorResult Continue() { return {}; }
+  static MonitorResult Stop(std::string why) { return {true, std::move(why)}; }
+};
+
+/// Why AdvanceTo() returned.
+struct SimulatorStatus {
+  enum class Reason { kReachedBoundaryTime, kReachedTerminationCondition };
+  Reason reason{Reason::kReachedBoundaryTime};
+  double time{0.0};
+  std::string message;
+  bool reached_boundary_time() const { return reason == Reason::kReachedBoundaryTime; }
+};
+
+/// Advances a system's context through time: events and continuous integration.
+///
+/// Each step: (1) unrestricted, then discrete updates due at the current time (periodic ones due now, and
+/// per-step ones); (2) integration of the continuous state to the next periodic event time or the boundary,
+/// whichever is first (several integrator steps for fixed-step integrators); (3) publishes due at the new time;
+/// (4) the monitor. Initialize() runs initialization events and the publishes due at the initial time. Periodic
+/// events land exactly on offset + k * period.
+///
+/// The default integrator is RK4 with a 1 ms maximum step.
+class Simulator {
+ public:
+  /// Simulates `system` from `context` (default: a new default context). The system must outlive the simulator.
+  explicit Simulator(const System& system, std::unique_ptr<Context> context = nullptr);
+  ~Simulator();
+
+  /// Runs initialization events; called by AdvanceTo() if not called before.
+  void Initialize();
+  /// Advances to time `t_final` (>= current time), or until the monitor stops the run.
+  SimulatorStatus AdvanceTo(double t_final);
+
+  /// Replaces the integrator (e.g. RungeKutta45Integrator). Returns a reference to it.
+  template <class I, typename... Args>
+  I& ResetIntegrator(Args&&... args) {
+    auto integrator = std::make_unique<I>(std::forward<Args>(args)...);
+    I& reference = *integrator;
+    integrator_ = std::move(integrator);
+    return reference;
+  }
+  IntegratorBase& get_mutable_integrator() { return *integrator_; }
+  const IntegratorBase& get_integrator() const { return *integrator_; }
+
+  /// Paces the simulation to `rate` x real time (0 = as fast as possible).
+  void set_target_realtime_rate(double rate);
+  /// Called after initialization and after every step; returning MonitorResult::Stop ends AdvanceTo().
+  void set_monitor(std::function<MonitorResult(const Context&)> monitor) { monitor_ = std::move(monitor); }
+
+  const Context& get_context() const { return *context_; }
+  /// Mutable access to the context; changing it after Initialize() is allowed (e.g. to perturb the state).
+  Context& get_mutable_context() { return *context_; }
+  const System& get_system() const { return system_; }
+
+  int64_t num_steps_taken() const { return num_steps_; }
+  int64_t num_discrete_updates() const { return num_discrete_updates_; }
+  int64_t num_unrestricted_updates() const { return num_unrestricted_updates_; }
+  int64_t num_publishes() const { return num_publishes_; }
+
+ private:
+  // Periodic events due at the earliest time after (or, inclusive, at) `time`.
+  double NextPeriodicEvents(double time, bool inclusive, std::vector<internal::TriggeredEvent>* due) const;
+  void ApplyUpdates(const std::vector<internal::TriggeredEvent>& timed);
+  void Publish(const std::vector<internal::TriggeredEvent>& timed);
+  bool CallMonitor(SimulatorStatus* status);
+  void PaceRealTime();
+
+  const System& system_;
+  std::unique_ptr<Context> context_;
+  std::unique_ptr<IntegratorBase> integrator_;
+  std::function<MonitorResult(const Context&)> monitor_;
+  double realtime_rate_{0.0};
+  bool initialized_{false};
+
+  std::vector<LeafAndContext> leaves_;
+  std::vector<internal::TriggeredEvent> per_step_updates_;
+  std::vector<internal::TriggeredEvent> per_step_publishes_;
+  std::vector<internal::TriggeredEvent> pending_updates_;  // Periodic updates due at the current time.
+
+  std::chrono::steady_clock::time_point wall_start_;
+  double sim_start_{0.0};
+  int64_t num_steps_{0};
+  int64_t num_discrete_updates_{0};
+  int64_t num_unrestricted_updates_{0};
+  int64_t num_publishes_{0};
+};
+
+}  // namespace cairn::systems

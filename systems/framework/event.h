@@ -1,0 +1,43 @@
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace cairn::systems {
+
+class Context;
+class DiscreteValues;
+class State;
+
+/// What makes an event happen.
+enum class TriggerType {
+  kInitialization,  ///< Once, in Simulator::Initialize().
+  kPeriodic,        ///< At offset + k * period, k = 0, 1, ...; the simulator lands exactly on these times.
+  kPerStep,         ///< Every simulator step.
+  kForced,          ///< Only when asked: System::ForcedPublish() / System::ExecuteForcedEvents().
+};
+
+/// What an event does.
+enum class EventKind {
+  kPublish,             ///< Reads the context, changes nothing in it (logging, printing, visualising).
+  kDiscreteUpdate,      ///< Computes the next discrete state.
+  kUnrestrictedUpdate,  ///< Computes the next state, any part of it (e.g. abstract state).
+};
+
+/// A periodic event's timing.
+struct PeriodicEventData {
+  double period{0.0};
+  double offset{0.0};
+};
+
+/// An event declared by a leaf system: its trigger, its kind and the one handler matching that kind.
+struct Event {
+  TriggerType trigger{TriggerType::kForced};
+  EventKind kind{EventKind::kPublish};
+  PeriodicEventData periodic;
+  std::function<void(const Context&)> publish;
+  std::function<void(const Context&, DiscreteValues*)> discrete_update;
+  std::function<void(const Context&, State*)> unrestricted_update;
+};
+
+}  // namespace cairn::systems

@@ -1,0 +1,56 @@
+#include "cairn/systems/primitives/vector_log.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "cairn/common/atomic_file.h"
+
+namespace cairn::systems {
+
+Eigen::Map<const Eigen::VectorXd> VectorLog::sample_times() const {
+  return Eigen::Map<const Eigen::VectorXd>(times_.data(), num_samples());
+}
+
+Eigen::Map<const Eigen::MatrixXd> VectorLog::data() const {
+  return Eigen::Map<const Eigen::MatrixXd>(values_.data(), size_, num_samples());
+}
+
+void VectorLog::AddData(double time, const Eigen::Ref<const Eigen::VectorXd>& value) {
+  if (value.size() != size_) {
+    throw std::invalid_argument("VectorLog of size " + std::to_string(size_) + " was given a sample of size " +
+                                std::to_string(value.size()) + ".");
+  }
+  times_.push_back(time);
+  values_.insert(values_.end(), value.data(), value.data() + value.size());
+}
+
+void VectorLog::Clear() {
+  times_.clear();
+  values_.clear();
+}
+
+void VectorLog::WriteCsv(const std::string& path, const std::vector<std::string>& column_names) const {
+  if (!column_names.empty() && static_cast<int>(column_names.size()) != size_) {
+    throw std::invalid_argument("VectorLog::WriteCsv: " + std::to_string(column_names.size()) +
+                                " column names for a log of size " + std::to_string(size_) +
+                                "; pass one name per element or none.");
+  }
+  std::string text = "time";
+  for (int i = 0; i < size_; ++i) text += "," + (column_names.empty() ? "x" + std::to_string(i) : column_names[i]);
+  text += "\n";
+  char number[32];
+  for (int k = 0; k < num_samples(); ++k) {
+    // %.17g round-trips doubles exactly, so a log read back equals the one written.
+    std::snprintf(number, sizeof(number), "%.17g", times_[k]);
+    text += number;
+    for (int i = 0; i < size_; ++i) {
+      std::snprintf(number, sizeof(number), "%.17g", values_[static_cast<std::size_t>(k) * size_ + i]);
+      text += ",";
+      text += number;
+    }
+    text += "\n";
+  }
+  WriteFileAtomically(path, text);
+}
+
+}  // namespace cairn::systems

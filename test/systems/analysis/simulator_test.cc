@@ -1,0 +1,147 @@
+#include "cairn/systems/analysis/simulator.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cairn/systems/framework/diagram_builder.h"
+#include "cairn/systems/framework/leaf_system.h"
+#include "cairn/systems/primitives/constant_vector_source.h"
+#include "cairn/systems/primitives/gain.h"
+#include "cairn/systems/primitives/integrator.h"
+#include "cairn/systems/primitives/vector_log_sink.h"
+#include "cairn/systems/primitives/zero_order_hold.h"
+#include "expect_throws.h"
+
+namespace cairn::systems {
+namespace {
+
+// Records when each kind of event runs (in a per-context log) and counts discrete updates in its state.
+class EventRecorder final : public LeafSystem {
+ public:
+  EventRecorder(double period, double offset) {
+    log_ = DeclarePerContextStorage(Value<std::vector<std::string>>());
+    count_ = DeclareDiscreteState(Eigen::VectorXd::Zero(1));
+    DeclarePeriodicPublishEvent(period, offset, [this](const Context& c) { Record(c, "publish"); });
+    DeclarePeriodicDiscreteUpdateEvent(period, offset, [this](const Context& c, DiscreteValues* next) {
+      Record(c, "update");
+      next->get_mutable_value(count_)[0] += 1.0;
+    });
+    DeclareInitializationPublishEvent([this](const Context& c) { Record(c, "init"); });
+    DeclarePerStepPublishEvent([this](const Context& c) { Record(c, "step"); });
+    DeclareForcedPublishEvent([this](const Context& c) { Record(c, "forced"); });
+  }
+  const std::vector<std::string>& Log(const Context& c) const {
+    return GetPerContextStorage<std::vector<std::string>>(c, log_);
+  }
+
+ private:
+  void Record(const Context& c, const std::string& what) const {
+    char text[64];
+    std::snprintf(text, sizeof(text), "%s@%.17g", what.c_str(), c.get_time());
+    GetMutablePerContextStorage<std::vector<std::string>>(c, log_).push_back(text);
+  }
+  int log_;
+  int count_;
+};
+
+TEST(SimulatorTest, PeriodicEventsLandExactlyOnTheirTimes) {
+  EventRecorder recorder(0.1, 0.05);
+  Simulator simulator(recorder);
+  simulator.AdvanceTo(0.5);
+  std::vector<std::string> updates;
+  for (const auto& entry : recorder.Log(simulator.get_context())) {
+    if (entry.rfind("update@", 0) == 0) updates.push_back(entry.substr(7));
+  }
+  // Updates at offset + k period for the times strictly before 0.5 reached so far (the one at 0.45 included;
+  // an update due exactly at the boundary waits for the next AdvanceTo).
+  ASSERT_EQ(updates.size(), 5u);
+  for (int k = 0; k < 5; ++k) {
+    char expected[32];
+    std::snprintf(expected, sizeof(expected), "%.17g", 0.05 + k * 0.1);
+    EXPECT_EQ(updates[k], expected);
+  }
+  EXPECT_EQ(simulator.get_context().get_discrete_state(0)[0], 5.0);
+  EXPECT_EQ(simulator.get_context().get_time(), 0.5);
+}
+
+TEST(SimulatorTest, EventOrderIsInitializationThenUpdatesThenPublishes) {
+  EventRecorder recorder(0.25, 0.0);
+  Simulator simulator(recorder);
+  simulator.AdvanceTo(0.5);
+  recorder.ForcedPublish(simulator.get_context());
+  const std::vector<std::string> expected = {"init@0",   "publish@0",    "step@0", "update@0", "publish@0.25",
+                                             "step@0.25", "update@0.25", "publish@0.5", "step@0.5", "forced@0.5"};
+  EXPECT_EQ(recorder.Log(simulator.get_context()), expected);
+  // The update due at 0.5 happens when the simulation continues.
+  simulator.AdvanceTo(0.6);
+  EXPECT_EQ(simulator.get_context().get_discrete_state(0)[0], 3.0);
+}
+
+TEST(SimulatorTest, DiscreteUpdatesSeeTheStateBeforeAnyUpdate) {
+  // Two holds in a ring swap their values every period only if both updates read the old values.
+  DiagramBuilder builder;
+  auto* a = builder.AddNamedSystem<ZeroOrderHold>("a", 1.0, 1);
+  auto* b = builder.AddNamedSystem<ZeroOrderHold>("b", 1.0, 1);
+  builder.Connect(*a, *b);
+  builder.Connect(*b, *a);
+  auto diagram = builder.Build();
+  Simulator simulator(*diagram);
+  diagram->GetMutableSubsystemContext(*a, &simulator.get_mutable_context()).SetDiscreteState(0, Eigen::VectorXd::Ones(1));
+  simulator.AdvanceTo(0.5);  // The updates at t = 0 ran.
+  EXPECT_EQ(diagram->GetSubsystemContext(*a, simulator.get_context()).get_discrete_state(0)[0], 0.0);
+  EXPECT_EQ(diagram->GetSubsystemContext(*b, simulator.get_context()).get_discrete_state(0)[0], 1.0);
+}
+
+TEST(SimulatorTest, MonitorCanStopTheRun) {
+  DiagramBuilder builder;
+  auto* source = builder.AddSystem<ConstantVectorSource>(Eigen::VectorXd::Ones(1));
+  auto* integrator = builder.AddNamedSystem<Integrator>("integrator", 1);
+  builder.Connect(*source, *integrator);
+  auto diagram = builder.Build();
+  Simulator simulator(*diagram);
+  simulator.set_monitor([](const Context& context) {
+    return context.get_continuous_state_vector()[0] >= 0.25 ? MonitorResult::Stop("reached 0.25")
+                                                             : MonitorResult::Continue();
+  });
+  const SimulatorStatus status = simulator.AdvanceTo(10.0);
+  EXPECT_FALSE(status.reached_boundary_time());
+  EXPECT_EQ(status.message, "reached 0.25");
+  EXPECT_NEAR(status.time, 0.25, 1.5e-3);
+}
+
+TEST(SimulatorTest, LogsEveryStepAndRejectsBadArguments) {
+  DiagramBuilder builder;
+  auto* source = builder.AddSystem<ConstantVectorSource>(Eigen::VectorXd::Ones(1));
+  auto* integrator = builder.AddNamedSystem<Integrator>("integrator", 1);
+  builder.Connect(*source, *integrator);
+  auto* logger = LogVectorOutput(integrator->get_output_port(), &builder, 0.1);
+  auto diagram = builder.Build();
+  Simulator simulator(*diagram);
+  simulator.AdvanceTo(1.0);
+  const VectorLog& log = logger->GetLog(diagram->GetSubsystemContext(*logger, simulator.get_context()));
+  ASSERT_EQ(log.num_samples(), 11);
+  for (int k = 0; k <= 10; ++k) EXPECT_NEAR(log.data()(0, k), 0.1 * k, 1e-12);
+
+  CAIRN_EXPECT_THROWS_WITH(simulator.AdvanceTo(0.5), std::invalid_argument, "not before the current time");
+  CAIRN_EXPECT_THROWS_WITH(simulator.set_target_realtime_rate(-1.0), std::invalid_argument, ">= 0");
+  CAIRN_EXPECT_THROWS_WITH(simulator.get_mutable_integrator().set_target_accuracy(1e-3), std::logic_error,
+                           "'rk4' has no error control", "RungeKutta45Integrator");
+}
+
+TEST(SimulatorTest, RealTimePacingKeepsResults) {
+  DiagramBuilder builder;
+  auto* source = builder.AddSystem<ConstantVectorSource>(Eigen::VectorXd::Ones(1));
+  auto* integrator = builder.AddNamedSystem<Integrator>("integrator", 1);
+  builder.Connect(*source, *integrator);
+  auto diagram = builder.Build();
+  Simulator simulator(*diagram);
+  simulator.set_target_realtime_rate(100.0);
+  simulator.AdvanceTo(0.05);
+  EXPECT_NEAR(simulator.get_context().get_continuous_state_vector()[0], 0.05, 1e-12);
+}
+
+}  // namespace
+}  // namespace cairn::systems

@@ -1,0 +1,25 @@
+#include "cairn/systems/primitives/gain.h"
+
+#include <gtest/gtest.h>
+
+#include "expect_throws.h"
+
+namespace cairn::systems {
+namespace {
+
+TEST(GainTest, ScalarAndPerElementGains) {
+  Gain scalar(2.0, 3);
+  auto context = scalar.CreateDefaultContext();
+  scalar.get_input_port().FixValue(context.get(), Eigen::Vector3d(1.0, 2.0, 3.0));
+  EXPECT_EQ(scalar.get_output_port().Eval<Eigen::VectorXd>(*context), Eigen::Vector3d(2.0, 4.0, 6.0));
+
+  Gain per_element(Eigen::Vector2d(-1.0, 0.5));
+  auto other = per_element.CreateDefaultContext();
+  per_element.get_input_port().FixValue(other.get(), Eigen::Vector2d(4.0, 4.0));
+  EXPECT_EQ(per_element.get_output_port().Eval<Eigen::VectorXd>(*other), Eigen::Vector2d(-4.0, 2.0));
+  EXPECT_TRUE(per_element.HasDirectFeedthrough(0, 0));
+  CAIRN_EXPECT_THROWS_WITH(Gain(1.0, 0), std::invalid_argument, "size must be positive");
+}
+
+}  // namespace
+}  // namespace cairn::systems
