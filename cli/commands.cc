@@ -7,10 +7,16 @@ namespace cairn::cli {
 
 void RegisterPendulumCommand(CommandRegistry* registry);
 void RegisterDiagramCommand(CommandRegistry* registry);
+void RegisterStereoEvalCommand(CommandRegistry* registry);
+void RegisterOccupancyCommand(CommandRegistry* registry);
+void RegisterModelInfoCommand(CommandRegistry* registry);
 
 void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPendulumCommand(registry);
   RegisterDiagramCommand(registry);
+  RegisterStereoEvalCommand(registry);
+  RegisterOccupancyCommand(registry);
+  RegisterModelInfoCommand(registry);
   (void)registry;
 }
 

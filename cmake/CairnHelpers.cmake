@@ -33,6 +33,11 @@ function(cairn_add_library name)
     $<BUILD_INTERFACE:${CAIRN_BUILD_INCLUDE_DIR}> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_compile_options(cairn_${name} PRIVATE ${CAIRN_WARNING_FLAGS})
   target_link_libraries(cairn_${name} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  if(CAIRN_SANITIZE)
+    # A sanitized library needs the sanitizer runtime first in every program that loads it, including outside
+    # projects linking the installed package.
+    target_link_options(cairn_${name} INTERFACE -fsanitize=address,undefined)
+  endif()
   install(TARGETS cairn_${name} EXPORT CairnTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

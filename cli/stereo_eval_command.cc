@@ -1,0 +1,180 @@
+// `cairn stereo-eval`: matches one rectified pair, computes whole-range confidence and scores it against ground
+// truth with the thesis' criteria (section 4.3.4).
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cairn/perception/stereo/compute_confidence.h"
+#include "cairn/perception/stereo/compute_cost_volume.h"
+#include "cairn/perception/stereo/cost_samples.h"
+#include "cairn/perception/stereo/middlebury_pair.h"
+#include "cairn/perception/stereo/stereo_evaluation.h"
+#include "cairn/perception/stereo/winner_take_all.h"
+#include "command_registry.h"
+
+namespace cairn::cli {
+namespace {
+
+struct StereoEvalState {
+  std::string left;
+  std::string right;
+  std::string gt;
+  std::string gt_right;
+  double gt_scale{0.0};
+  int dmax{-1};
+  std::string cost{"btsad"};
+  int window{9};
+  std::string model{"merrell"};
+  std::string params{"ml"};
+  std::string prefilter{"sobel"};
+  int border{10};
+  bool json{false};
+};
+
+double MillisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+int RunStereoEval(const StereoEvalState& s) {
+  using namespace cairn::perception;
+  // Parse the names first: a typo should fail before any image is read.
+  const CostFunction cost = ParseCostFunction(s.cost);
+  const ConfidenceModelType model_type = ParseConfidenceModelType(s.model);
+  const Prefilter prefilter = ParsePrefilter(s.prefilter);
+  double fixed_parameter = 0.0;
+  const bool ml = s.params == "ml";
+  const bool from_gt = s.params == "gt";
+  if (!ml && !from_gt) {
+    std::istringstream in(s.params);
+    if (!(in >> fixed_parameter) || !in.eof()) {
+      throw std::invalid_argument("--params '" + s.params +
+                                  "' is neither 'ml', 'gt' nor a number; e.g. --params ml or --params 8.49e1");
+    }
+  }
+  const cv::Mat left = LoadGrayImage(s.left);
+  const cv::Mat right = LoadGrayImage(s.right);
+  if (left.size() != right.size()) {
+    throw std::invalid_argument("left image '" + s.left + "' is " + std::to_string(left.cols) + "x" +
+                                std::to_string(left.rows) + " but right image '" + s.right + "' is " +
+                                std::to_string(right.cols) + "x" + std::to_string(right.rows) +
+                                "; pass a rectified pair of equal size");
+  }
+  const cv::Mat gt = LoadDisparityImage(s.gt, s.gt_scale);
+  if (gt.size() != left.size()) {
+    throw std::invalid_argument("ground truth '" + s.gt + "' is " + std::to_string(gt.cols) + "x" +
+                                std::to_string(gt.rows) + " but the images are " + std::to_string(left.cols) + "x" +
+                                std::to_string(left.rows) + "; pass the left view's disparity map");
+  }
+  cv::Mat occluded;
+  if (!s.gt_right.empty()) {
+    const cv::Mat gt_right = LoadDisparityImage(s.gt_right, s.gt_scale);
+    if (gt_right.size() != gt.size()) {
+      throw std::invalid_argument("right ground truth '" + s.gt_right + "' differs in size from '" + s.gt + "'");
+    }
+    occluded = OcclusionFromGroundTruth(gt, gt_right);
+  }
+  CostVolumeOptions options;
+  options.cost = cost;
+  options.window = s.window;
+  options.prefilter = prefilter;
+  options.min_disparity = 0;
+  if (s.dmax >= 0) {
+    options.max_disparity = s.dmax;
+  } else {
+    // Default: the ground truth's largest disparity, rounded up to a multiple of 16 as block matchers expect.
+    double max_gt = 0.0;
+    cv::minMaxLoc(gt, nullptr, &max_gt);
+    options.max_disparity = 16 * (static_cast<int>(std::floor(max_gt)) / 16 + 1) - 1;
+  }
+
+  auto start = std::chrono::steady_clock::now();
+  DisparityVolume costs;
+  ComputeCostVolume(left, right, options, &costs);
+  const double ms_cost_volume = MillisecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  WtaResult wta;
+  ComputeWinnerTakeAll(costs, WtaOptions{}, &wta);
+  const double ms_wta = MillisecondsSince(start);
+
+  start = std::chrono::steady_clock::now();
+  std::vector<float> samples;
+  std::optional<ConfidenceModel> model;
+  if (ml || from_gt) {
+    if (ml) {
+      CollectConsistentWtaCosts(costs, wta, &samples);
+    } else {
+      cv::Mat visible;
+      if (!occluded.empty()) cv::compare(occluded, 0, visible, cv::CMP_EQ);
+      CollectGroundTruthCosts(costs, gt, visible, &samples);
+    }
+    model = ConfidenceModel::FitMaximumLikelihood(model_type, cost, samples);
+  } else {
+    model = ConfidenceModel::Parametric(model_type, cost, fixed_parameter);
+  }
+  DisparityVolume confidence;
+  ComputeConfidence(costs, *model, &confidence);
+  const double ms_confidence = MillisecondsSince(start);
+
+  StereoEvaluationOptions evaluation_options;
+  evaluation_options.border = s.border;
+  const StereoEvaluation result = EvaluateStereo(confidence, wta, gt, occluded, evaluation_options);
+  const double parameter = model->parameter();
+  if (s.json) {
+    std::printf(
+        "{\"bad_pixel_rate\": %.6f, \"bad_pixel_rate_subpixel\": %.6f, \"auc\": %.6f, \"auc_optimal\": %.6f, \"c_gt_badpx\": %.6f, "
+        "\"parameter\": %s, \"model\": \"%s\", \"cost\": \"%s\", \"window\": %d, \"max_disparity\": %d, "
+        "\"pixels\": %zu, \"ms_cost_volume\": %.3f, \"ms_wta\": %.3f, \"ms_confidence\": %.3f}\n",
+        result.bad_pixel_rate, result.bad_pixel_rate_subpixel, result.auc, result.auc_optimal, result.c_gt_badpx,
+        std::isfinite(parameter) ? std::to_string(parameter).c_str() : "null", s.model.c_str(), s.cost.c_str(),
+        s.window, options.max_disparity, result.num_pixels, ms_cost_volume, ms_wta, ms_confidence);
+  } else {
+    std::printf("model            %s\n", model->Describe().c_str());
+    std::printf("disparities      0..%d, %s %dx%d, prefilter %s\n", options.max_disparity, s.cost.c_str(), s.window,
+                s.window, s.prefilter.c_str());
+    std::printf("pixels           %zu evaluated, %zu bad\n", result.num_pixels, result.num_bad);
+    std::printf("bad-pixel rate   %.4f (sub-pixel WTA: %.4f)\n", result.bad_pixel_rate, result.bad_pixel_rate_subpixel);
+    std::printf("AUC              %.4f (optimal %.4f)\n", result.auc, result.auc_optimal);
+    std::printf("C(d in GT)_badpx %.4f\n", result.c_gt_badpx);
+    std::printf("time             cost volume %.1f ms, WTA %.1f ms, confidence %.1f ms\n", ms_cost_volume, ms_wta,
+                ms_confidence);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void RegisterStereoEvalCommand(CommandRegistry* registry) {
+  registry->Add("stereo-eval", "Evaluate whole-range stereo confidence on a pair with ground truth",
+                [](CLI::App& app) -> CommandAction {
+                  auto s = std::make_shared<StereoEvalState>();
+                  app.add_option("--left", s->left, "Left (reference) image")->required();
+                  app.add_option("--right", s->right, "Right image")->required();
+                  app.add_option("--gt", s->gt, "Left ground-truth disparity PNG (0 = unknown)")->required();
+                  app.add_option("--gt-scale", s->gt_scale, "Ground-truth PNG value per pixel of disparity")
+                      ->required();
+                  app.add_option("--gt-right", s->gt_right, "Right ground truth, to exclude occluded pixels");
+                  app.add_option("--dmax", s->dmax,
+                                 "Largest disparity (default: the ground truth's, rounded up to 16k - 1)");
+                  app.add_option("--cost", s->cost, "Window cost: ssd or btsad")->capture_default_str();
+                  app.add_option("--window", s->window, "Odd window side")->capture_default_str();
+                  app.add_option("--model", s->model, "Confidence model: matthies, merrell, exp or hsm")
+                      ->capture_default_str();
+                  app.add_option("--params", s->params,
+                                 "ml (maximum likelihood, no ground truth), gt (fit at true disparities) or a value")
+                      ->capture_default_str();
+                  app.add_option("--prefilter", s->prefilter, "sobel or none")->capture_default_str();
+                  app.add_option("--border", s->border, "Ignored border (pixels)")->capture_default_str();
+                  app.add_flag("--json", s->json, "Print one JSON object");
+                  return [s] { return RunStereoEval(*s); };
+                });
+}
+
+}  // namespace cairn::cli

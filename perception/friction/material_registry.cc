@@ -1,0 +1,270 @@
+#include "cairn/perception/friction/material_registry.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "cairn/common/atomic_file.h"
+#include "cairn/common/text_suggestions.h"
+
+namespace cairn::perception {
+namespace {
+
+std::string Num(double x) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.17g", x);
+  return text;
+}
+
+std::string Short(double x) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", x);
+  return text;
+}
+
+// The posterior of μ ~ N(m, s²) after one observation, and the observation's likelihood under N(m, s²).
+struct Posterior {
+  double mean;
+  double variance;
+  double likelihood;
+};
+
+Posterior UpdateNormal(double m, double s, const ContactObservation& observation) {
+  const double s2 = s * s;
+  switch (observation.kind) {
+    case ContactObservation::Kind::kMeasured: {
+      const double r2 = observation.stddev * observation.stddev;
+      const double variance = 1.0 / (1.0 / s2 + 1.0 / r2);
+      const double mean = variance * (m / s2 + observation.value / r2);
+      const double total = s2 + r2;
+      const double z = observation.value - m;
+      return {mean, variance, std::exp(-0.5 * z * z / total) / std::sqrt(2.0 * M_PI * total)};
+    }
+    case ContactObservation::Kind::kSlipped:
+    case ContactObservation::Kind::kHeld: {
+      // Truncated-normal moments (μ < r or μ >= r) with the inverse Mills ratio.
+      const double alpha = (observation.value - m) / s;
+      const double phi = std::exp(-0.5 * alpha * alpha) / std::sqrt(2.0 * M_PI);
+      const bool below = observation.kind == ContactObservation::Kind::kSlipped;
+      const double mass = below ? StandardNormalCdf(alpha) : 1.0 - StandardNormalCdf(alpha);
+      if (mass < 1e-300) return {m, s2, 0.0};
+      const double lambda = (below ? -phi : phi) / mass;
+      const double mean = m + s * lambda;
+      const double variance = s2 * (1.0 + alpha * lambda - lambda * lambda);
+      return {mean, variance, mass};
+    }
+  }
+  return {m, s2, 0.0};
+}
+
+}  // namespace
+
+MaterialRegistry::MaterialRegistry(std::vector<Material> materials) : materials_(std::move(materials)) {
+  std::set<std::string> seen;
+  for (const Material& material : materials_) {
+    if (material.label.empty()) throw std::invalid_argument("MaterialRegistry: a material has an empty label.");
+    if (!seen.insert(material.label).second) {
+      throw std::invalid_argument("MaterialRegistry: the label '" + material.label +
+                                  "' appears twice; labels must be unique.");
+    }
+  }
+}
+
+MaterialRegistry MaterialRegistry::ThesisTable33() {
+  std::vector<Material> materials;
+  const std::pair<const char*, std::pair<double, double>> measured[] = {
+      {"asphalt", {0.74, 0.12}}, {"grass", {0.53, 0.10}}, {"rock", {0.80, 0.08}},  {"carpet", {0.82, 0.02}},
+      {"ceramic", {0.97, 0.05}}, {"marble", {0.83, 0.15}}, {"metal", {0.80, 0.15}}, {"wood", {0.88, 0.12}},
+  };
+  for (const auto& [label, parameters] : measured) {
+    materials.push_back({label, FrictionDistribution::Normal(parameters.first, parameters.second), 0});
+  }
+  for (const char* label : {"sand", "sky", "snow", "water", "cloth", "paper"}) {
+    materials.push_back({label, FrictionDistribution::NotWalkable(), 0});
+  }
+  return MaterialRegistry(std::move(materials));
+}
+
+const MaterialRegistry::Material& MaterialRegistry::material(int index) const {
+  if (index < 0 || index >= size()) {
+    throw std::out_of_range("MaterialRegistry has " + std::to_string(size()) + " materials; index " +
+                            std::to_string(index) + " is out of range.");
+  }
+  return materials_[index];
+}
+
+std::vector<std::string> MaterialRegistry::labels() const {
+  std::vector<std::string> result;
+  for (const Material& material : materials_) result.push_back(material.label);
+  return result;
+}
+
+int MaterialRegistry::IndexOf(const std::string& label) const {
+  for (int i = 0; i < size(); ++i) {
+    if (materials_[i].label == label) return i;
+  }
+  throw std::invalid_argument("Unknown material '" + label + "'; did you mean " +
+                              QuotedList(ClosestNames(label, labels())) + "?");
+}
+
+void MaterialRegistry::ValidateProbabilities(const Eigen::Ref<const Eigen::VectorXd>& probabilities) const {
+  if (probabilities.size() != size()) {
+    throw std::invalid_argument("Material probabilities have " + std::to_string(probabilities.size()) +
+                                " entries but the registry has " + std::to_string(size()) +
+                                " labels; give one probability per label, in registry order.");
+  }
+  double sum = 0.0;
+  for (int i = 0; i < size(); ++i) {
+    const double p = probabilities[i];
+    if (!(p >= 0.0 && p <= 1.0)) {
+      throw std::invalid_argument("The probability of '" + materials_[i].label + "' is " + Short(p) +
+                                  "; probabilities must be in [0, 1].");
+    }
+    sum += p;
+  }
+  if (std::abs(sum - 1.0) > 1e-6) {
+    throw std::invalid_argument("Material probabilities sum to " + Num(sum) +
+                                ", not 1; normalise them (e.g. apply a softmax to the segmenter's scores).");
+  }
+}
+
+Eigen::VectorXd MaterialRegistry::UpdateFromContact(const Eigen::Ref<const Eigen::VectorXd>& probabilities,
+                                                    const ContactObservation& observation) {
+  ValidateProbabilities(probabilities);
+  if (!std::isfinite(observation.value) ||
+      (observation.kind == ContactObservation::Kind::kMeasured && !(observation.stddev > 0.0))) {
+    throw std::invalid_argument("UpdateFromContact: the observation needs a finite value (got " +
+                                Short(observation.value) + ") and, when measured, a noise stddev > 0 (got " +
+                                Short(observation.stddev) + ").");
+  }
+  const int n = size();
+  std::vector<Posterior> posteriors(n, Posterior{0.0, 0.0, 0.0});
+  Eigen::VectorXd responsibility = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < n; ++i) {
+    if (probabilities[i] == 0.0) continue;
+    const FrictionDistribution& prior = materials_[i].friction;
+    double likelihood = 0.0;
+    if (prior.kind() == FrictionDistribution::Kind::kNotWalkable) {
+      // All mass at 0: only "slipped at r > 0" and a measurement near 0 are explained.
+      if (observation.kind == ContactObservation::Kind::kSlipped) likelihood = observation.value > 0.0 ? 1.0 : 0.0;
+      if (observation.kind == ContactObservation::Kind::kMeasured) {
+        const double z = observation.value / observation.stddev;
+        likelihood = std::exp(-0.5 * z * z) / (std::sqrt(2.0 * M_PI) * observation.stddev);
+      }
+    } else if (prior.kind() == FrictionDistribution::Kind::kNormal && prior.b() > 0.0) {
+      posteriors[i] = UpdateNormal(prior.a(), prior.b(), observation);
+      likelihood = posteriors[i].likelihood;
+    } else {
+      throw std::invalid_argument("UpdateFromContact: material '" + materials_[i].label + "' has a " +
+                                  prior.kind_name() +
+                                  " distribution; learning from contact needs normal distributions with a spread > 0.");
+    }
+    responsibility[i] = probabilities[i] * likelihood;
+  }
+  const double evidence = responsibility.sum();
+  if (!(evidence > 0.0)) {
+    throw std::invalid_argument("UpdateFromContact: no material with nonzero probability can explain the observation "
+                                "(value " + Short(observation.value) + "); check the probabilities at the contact.");
+  }
+  responsibility /= evidence;
+  for (int i = 0; i < n; ++i) {
+    Material& material = materials_[i];
+    const double w = responsibility[i];
+    if (w == 0.0 || material.friction.kind() != FrictionDistribution::Kind::kNormal) continue;
+    // Mixture of "this surface was label i" (posterior) and "it was not" (prior), moment-matched to a normal.
+    const double m0 = material.friction.a();
+    const double v0 = material.friction.b() * material.friction.b();
+    const Posterior& post = posteriors[i];
+    const double mean = w * post.mean + (1.0 - w) * m0;
+    const double second = w * (post.variance + post.mean * post.mean) + (1.0 - w) * (v0 + m0 * m0);
+    material.friction = FrictionDistribution::Normal(mean, std::sqrt(std::max(second - mean * mean, 1e-12)));
+    ++material.num_contacts;
+  }
+  return responsibility;
+}
+
+void MaterialRegistry::SaveYaml(const std::string& path) const {
+  YAML::Emitter out;
+  out << YAML::BeginMap << YAML::Key << "materials" << YAML::Value << YAML::BeginSeq;
+  for (const Material& material : materials_) {
+    const FrictionDistribution& f = material.friction;
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "label" << YAML::Value << material.label;
+    out << YAML::Key << "distribution" << YAML::Value << f.kind_name();
+    if (f.kind() == FrictionDistribution::Kind::kNormal || f.kind() == FrictionDistribution::Kind::kTruncatedNormal) {
+      out << YAML::Key << "mean" << YAML::Value << Num(f.a()) << YAML::Key << "stddev" << YAML::Value << Num(f.b());
+    } else if (f.kind() == FrictionDistribution::Kind::kGeneralizedExtremeValue) {
+      out << YAML::Key << "location" << YAML::Value << Num(f.a()) << YAML::Key << "scale" << YAML::Value << Num(f.b())
+          << YAML::Key << "shape" << YAML::Value << Num(f.c());
+    }
+    if (material.num_contacts > 0) out << YAML::Key << "contacts" << YAML::Value << material.num_contacts;
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq << YAML::EndMap;
+  WriteFileAtomically(path, std::string(out.c_str()) + "\n");
+}
+
+MaterialRegistry MaterialRegistry::LoadYaml(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw std::invalid_argument("Cannot read the material registry '" + path + "'; check the path.");
+  } catch (const YAML::Exception& error) {
+    throw std::invalid_argument("Malformed YAML in '" + path + "' at line " + std::to_string(error.mark.line + 1) +
+                                ": " + error.msg);
+  }
+  auto fail = [&path](const YAML::Node& node, const std::string& message) -> std::invalid_argument {
+    return std::invalid_argument("In '" + path + "' line " + std::to_string(node.Mark().line + 1) + ": " + message);
+  };
+  const YAML::Node list = root["materials"];
+  if (!list || !list.IsSequence()) {
+    throw std::invalid_argument("'" + path + "' needs a top-level key 'materials' holding a list of materials.");
+  }
+  auto number = [&](const YAML::Node& entry, const char* key) {
+    const YAML::Node value = entry[key];
+    if (!value) throw fail(entry, std::string("missing key '") + key + "'.");
+    try {
+      return value.as<double>();
+    } catch (const YAML::Exception&) {
+      throw fail(value, std::string("key '") + key + "' must be a number; got '" + value.as<std::string>() + "'.");
+    }
+  };
+  std::vector<Material> materials;
+  for (const YAML::Node& entry : list) {
+    if (!entry.IsMap() || !entry["label"]) throw fail(entry, "each material needs a 'label'.");
+    const std::string label = entry["label"].as<std::string>();
+    const std::string kind = entry["distribution"] ? entry["distribution"].as<std::string>() : "normal";
+    try {
+      Material material{label, FrictionDistribution::NotWalkable(), 0};
+      if (kind == "normal") {
+        material.friction = FrictionDistribution::Normal(number(entry, "mean"), number(entry, "stddev"));
+      } else if (kind == "truncated_normal") {
+        material.friction = FrictionDistribution::TruncatedNormal(number(entry, "mean"), number(entry, "stddev"));
+      } else if (kind == "gev") {
+        material.friction = FrictionDistribution::GeneralizedExtremeValue(
+            number(entry, "location"), number(entry, "scale"), number(entry, "shape"));
+      } else if (kind != "not_walkable") {
+        throw fail(entry["distribution"], "unknown distribution '" + kind + "' for material '" + label +
+                                              "'; use normal, truncated_normal, gev or not_walkable.");
+      }
+      if (entry["contacts"]) material.num_contacts = entry["contacts"].as<int>();
+      materials.push_back(std::move(material));
+    } catch (const std::invalid_argument& error) {
+      const std::string message = error.what();
+      if (message.rfind("In '", 0) == 0) throw;
+      throw fail(entry, "material '" + label + "': " + message);
+    }
+  }
+  try {
+    return MaterialRegistry(std::move(materials));
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument("In '" + path + "': " + error.what());
+  }
+}
+
+}  // namespace cairn::perception

@@ -1,0 +1,54 @@
+#include "cairn/perception/occupancy/bars_scenario.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace cairn::perception {
+
+BarsScenario BarsScenario::Make(int frames) {
+  if (frames < 1) {
+    throw std::invalid_argument("BarsScenario: " + std::to_string(frames) + " frames; ask for at least 1 (the thesis uses 20)");
+  }
+  BarsScenario s;
+  s.calibration = StereoCalibration{300.0, 300.0, 159.5, 119.5, 0.3};
+  const Eigen::Vector3d center(0.0, 3.0, 0.0);
+  ProceduralTexture bar_texture;
+  bar_texture.kind = ProceduralTexture::Kind::kNoise;
+  bar_texture.scale = 0.03;
+  bar_texture.mean = 200.0;
+  bar_texture.contrast = 50.0;
+  bar_texture.seed = 7;
+  for (int i = 0; i < 7; ++i) {
+    Eigen::Isometry3d X_WB = Eigen::Isometry3d::Identity();
+    X_WB.translation() = center + Eigen::Vector3d(0.3 * (i - 3), 0.0, 0.0);
+    const Eigen::Vector3d half(0.04, 0.04, 3.0);
+    s.scene.AddBox(X_WB, half, bar_texture, 1);
+    s.bars.emplace_back();
+    s.bars.back().AddBox(X_WB, half, bar_texture, 1);
+  }
+  ProceduralTexture wall;
+  wall.kind = ProceduralTexture::Kind::kNoise;
+  wall.scale = 0.4;
+  wall.mean = 70.0;
+  wall.contrast = 25.0;
+  wall.seed = 3;
+  s.scene.AddPlane(Eigen::Vector3d(0.0, 10.0, 0.0), Eigen::Vector3d(0.0, -1.0, 0.0), wall, 2);
+  const double radius = 3.0;
+  for (int f = 0; f < frames; ++f) {
+    const double angle = frames == 1 ? 0.0 : (-25.0 + 50.0 * f / (frames - 1)) * M_PI / 180.0;
+    const Eigen::Vector3d position = center + radius * Eigen::Vector3d(std::sin(angle), -std::cos(angle), 0.0);
+    const Eigen::Vector3d forward = (center - position).normalized();
+    const Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitZ()).normalized();
+    const Eigen::Vector3d down = forward.cross(right);
+    Eigen::Isometry3d X_WC = Eigen::Isometry3d::Identity();
+    X_WC.linear().col(0) = right;
+    X_WC.linear().col(1) = down;
+    X_WC.linear().col(2) = forward;
+    X_WC.translation() = position;
+    s.trajectory.push_back(X_WC);
+  }
+  return s;
+}
+
+}  // namespace cairn::perception

@@ -1,0 +1,48 @@
+#pragma once
+
+/// @file
+/// The visually repetitive scene of thesis Figs. 4.7/4.8: seven thin identical vertical bars.
+
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "cairn/perception/stereo/stereo_calibration.h"
+#include "cairn/perception/stereo/synthetic_stereo_scene.h"
+
+namespace cairn::perception {
+
+/// Seven identical, identically textured vertical bars (8 cm square, 30 cm apart, 3 m from the camera path's
+/// centre; world z up) in front of a textured wall 7 m away, seen by a 320 x 240 stereo camera (fx = 300 px,
+/// baseline 0.3 m) moving on an arc of +-25 degrees around them while looking at their centre. From the start
+/// pose, a bar's image repeats every 30 px while its disparity is 30 px, so every bar also matches its neighbour
+/// at disparity 60: WTA stereo sees ghost bars at 1.5 m.
+struct BarsScenario {
+  /// The scene (bars carry label 1, the wall label 2).
+  SyntheticStereoScene scene;
+  /// One scene per bar, for per-bar ground truth.
+  std::vector<SyntheticStereoScene> bars;
+  /// The camera.
+  StereoCalibration calibration;
+  /// Image size.
+  int width{320};
+  /// Image size.
+  int height{240};
+  /// Disparity range matched (covers the wall, the bars and their ghosts).
+  int min_disparity{8};
+  /// See min_disparity.
+  int max_disparity{71};
+  /// Left-camera poses in the world, one per frame.
+  std::vector<Eigen::Isometry3d> trajectory;
+  /// The evaluation grid: minimum corner, cell size and dimensions (it covers the bars and the ghost zone).
+  Eigen::Vector3d grid_min_corner{-1.3, 1.2, -0.3};
+  /// Cell side (metres).
+  double grid_resolution{0.05};
+  /// Cells per axis.
+  Eigen::Vector3i grid_dims{52, 54, 12};
+
+  /// Builds the scenario with `frames` camera poses (at least 1; throws std::invalid_argument otherwise).
+  static BarsScenario Make(int frames = 20);
+};
+
+}  // namespace cairn::perception

@@ -1,0 +1,111 @@
+#include "cairn/perception/occupancy/occupancy_grid.h"
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace cairn::perception {
+
+OccupancyGrid::OccupancyGrid(const Eigen::Vector3d& min_corner, double resolution, const Eigen::Vector3i& dims)
+    : OccupancyGrid(min_corner, resolution, dims, Options{}) {}
+
+OccupancyGrid::OccupancyGrid(const Eigen::Vector3d& min_corner, double resolution, const Eigen::Vector3i& dims,
+                             const Options& options)
+    : min_corner_(min_corner),
+      resolution_(resolution),
+      dims_(dims),
+      min_log_odds_(static_cast<float>(options.min_log_odds)),
+      max_log_odds_(static_cast<float>(options.max_log_odds)) {
+  if (!(resolution > 0.0) || !std::isfinite(resolution)) {
+    throw std::invalid_argument("OccupancyGrid: resolution " + std::to_string(resolution) +
+                                " m must be positive (e.g. 0.05 for 5 cm cells)");
+  }
+  if (dims.minCoeff() <= 0) {
+    throw std::invalid_argument("OccupancyGrid: dimensions " + std::to_string(dims.x()) + "x" +
+                                std::to_string(dims.y()) + "x" + std::to_string(dims.z()) +
+                                " must all be positive");
+  }
+  if (!(options.min_log_odds < 0.0 && options.max_log_odds > 0.0)) {
+    throw std::invalid_argument("OccupancyGrid: log-odds clamps [" + std::to_string(options.min_log_odds) + ", " +
+                                std::to_string(options.max_log_odds) +
+                                "] must straddle 0 (probability 0.5), e.g. [-2, 3.5]");
+  }
+  log_odds_.assign(static_cast<std::size_t>(dims.x()) * dims.y() * dims.z(), 0.0f);
+}
+
+std::optional<Eigen::Vector3i> OccupancyGrid::CellOf(const Eigen::Vector3d& p_W) const {
+  const Eigen::Vector3d local = (p_W - min_corner_) / resolution_;
+  Eigen::Vector3i cell;
+  for (int a = 0; a < 3; ++a) {
+    const double f = std::floor(local[a]);
+    if (f < 0.0 || f >= dims_[a]) return std::nullopt;
+    cell[a] = static_cast<int>(f);
+  }
+  return cell;
+}
+
+Eigen::Vector3i OccupancyGrid::Cell(std::size_t index) const {
+  const auto nx = static_cast<std::size_t>(dims_.x());
+  const auto ny = static_cast<std::size_t>(dims_.y());
+  return Eigen::Vector3i(static_cast<int>(index % nx), static_cast<int>((index / nx) % ny),
+                         static_cast<int>(index / (nx * ny)));
+}
+
+double OccupancyGrid::probability(std::size_t index) const {
+  return 1.0 / (1.0 + std::exp(-static_cast<double>(log_odds_[index])));
+}
+
+double OccupancyGrid::Probability(const Eigen::Vector3d& p_W) const {
+  const auto cell = CellOf(p_W);
+  return cell ? probability(Index(*cell)) : 0.5;
+}
+
+void OccupancyGrid::Clear() { std::fill(log_odds_.begin(), log_odds_.end(), 0.0f); }
+
+std::vector<std::size_t> OccupancyGrid::OccupiedCells(double threshold) const {
+  const auto limit = static_cast<float>(std::log(threshold / (1.0 - threshold)));
+  std::vector<std::size_t> cells;
+  for (std::size_t i = 0; i < log_odds_.size(); ++i) {
+    if (log_odds_[i] > limit) cells.push_back(i);
+  }
+  return cells;
+}
+
+std::vector<Eigen::Vector3d> OccupancyGrid::OccupiedPoints(double threshold) const {
+  std::vector<Eigen::Vector3d> points;
+  for (std::size_t i : OccupiedCells(threshold)) points.push_back(CellCenter(Cell(i)));
+  return points;
+}
+
+std::optional<Eigen::Vector3d> OccupancyGrid::CastRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                                                      double max_range, double threshold) const {
+  const double norm = direction.norm();
+  if (!(norm > 0.0)) {
+    throw std::invalid_argument("OccupancyGrid::CastRay: the direction is zero; give the ray's direction");
+  }
+  const auto limit = static_cast<float>(std::log(threshold / (1.0 - threshold)));
+  std::optional<Eigen::Vector3d> hit;
+  Traverse(origin, direction / norm, 0.0, max_range, [&](std::size_t index, double, double) {
+    if (log_odds_[index] > limit) {
+      hit = CellCenter(Cell(index));
+      return false;
+    }
+    return true;
+  });
+  return hit;
+}
+
+void OccupancyGrid::WritePly(const std::string& path, double threshold) const {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("OccupancyGrid::WritePly: cannot write '" + path + "'; check the folder exists");
+  const auto cells = OccupiedCells(threshold);
+  out << "ply\nformat ascii 1.0\nelement vertex " << cells.size()
+      << "\nproperty float x\nproperty float y\nproperty float z\nproperty float probability\nend_header\n";
+  for (std::size_t i : cells) {
+    const Eigen::Vector3d p = CellCenter(Cell(i));
+    out << p.x() << " " << p.y() << " " << p.z() << " " << probability(i) << "\n";
+  }
+  if (!out) throw std::runtime_error("OccupancyGrid::WritePly: writing '" + path + "' failed (disk full?)");
+}
+
+}  // namespace cairn::perception

@@ -1,0 +1,263 @@
+#include "cairn/perception/stereo/compute_cost_volume.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+#include "cairn/common/cairn_assert.h"
+#include "cairn/perception/internal/parallel_rows.h"
+
+namespace cairn::perception {
+namespace {
+
+// The hot kernels are compiled twice (AVX2 and baseline x86-64) and picked at load time, so a generic build
+// still uses the wide registers of the machine it runs on.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define CAIRN_MULTIVERSION __attribute__((target_clones("avx2", "default")))
+#else
+#define CAIRN_MULTIVERSION
+#endif
+
+// Per-row inputs of the pixel cost, in "doubled" integer units for BTSAD so that Birchfield-Tomasi's
+// half-pixel interpolations stay integers: value = 2 I, min/max over {2 I(x), I(x) + I(x-1), I(x) + I(x+1)}.
+struct RowSignals {
+  std::vector<int32_t> left;       // W: 2 I_L (BTSAD) or I_L (SSD).
+  std::vector<int32_t> left_min;   // W (BTSAD only).
+  std::vector<int32_t> left_max;   // W (BTSAD only).
+  std::vector<int32_t> right;      // W + D - 1, reversed and edge-replicated (see FillRow()).
+  std::vector<int32_t> right_min;  // W + D - 1 (BTSAD only).
+  std::vector<int32_t> right_max;  // W + D - 1 (BTSAD only).
+};
+
+void BtRange(const uint8_t* row, int width, int x, int32_t* lo, int32_t* hi) {
+  const int32_t c = 2 * row[x];
+  const int32_t l = x > 0 ? row[x] + row[x - 1] : c;
+  const int32_t r = x + 1 < width ? row[x] + row[x + 1] : c;
+  *lo = std::min({c, l, r});
+  *hi = std::max({c, l, r});
+}
+
+// The right-image arrays are stored reversed so that, for a fixed left column x, consecutive disparities read
+// consecutive memory: index i holds right column clamp(W - 1 - dmin - i), and disparity index k at column x
+// reads index W - 1 - x + k.
+void FillRow(const uint8_t* left, const uint8_t* right, int width, int dmin, int num_disp, bool bt, RowSignals* s) {
+  const int span = width + num_disp - 1;
+  for (int x = 0; x < width; ++x) {
+    if (bt) {
+      s->left[x] = 2 * left[x];
+      BtRange(left, width, x, &s->left_min[x], &s->left_max[x]);
+    } else {
+      s->left[x] = left[x];
+    }
+  }
+  for (int i = 0; i < span; ++i) {
+    const int xr = std::clamp(width - 1 - dmin - i, 0, width - 1);
+    if (bt) {
+      s->right[i] = 2 * right[xr];
+      BtRange(right, width, xr, &s->right_min[i], &s->right_max[i]);
+    } else {
+      s->right[i] = right[xr];
+    }
+  }
+}
+
+// Pixel costs e(x, k) of one image row, k contiguous.
+CAIRN_MULTIVERSION
+void PixelCostsSsd(const RowSignals& s, int width, int num_disp, int32_t* e) {
+  for (int x = 0; x < width; ++x) {
+    const int32_t l = s.left[x];
+    const int32_t* r = s.right.data() + (width - 1 - x);
+    int32_t* out = e + static_cast<std::size_t>(x) * num_disp;
+    for (int k = 0; k < num_disp; ++k) {
+      const int32_t diff = l - r[k];
+      out[k] = diff * diff;
+    }
+  }
+}
+
+CAIRN_MULTIVERSION
+void PixelCostsBt(const RowSignals& s, int width, int num_disp, int32_t* e) {
+  for (int x = 0; x < width; ++x) {
+    const int32_t l = s.left[x];
+    const int32_t lmin = s.left_min[x];
+    const int32_t lmax = s.left_max[x];
+    const std::size_t base = static_cast<std::size_t>(width - 1 - x);
+    const int32_t* r = s.right.data() + base;
+    const int32_t* rmin = s.right_min.data() + base;
+    const int32_t* rmax = s.right_max.data() + base;
+    int32_t* out = e + static_cast<std::size_t>(x) * num_disp;
+    for (int k = 0; k < num_disp; ++k) {
+      const int32_t left_to_right = std::max(std::max(0, l - rmax[k]), rmin[k] - l);
+      const int32_t right_to_left = std::max(std::max(0, r[k] - lmax), lmin - r[k]);
+      out[k] = std::min(left_to_right, right_to_left);
+    }
+  }
+}
+
+// colsum += fresh - stale; stale <- fresh (the ring slot now holds the new row).
+CAIRN_MULTIVERSION
+void SlideColumns(std::size_t n, int32_t* colsum, int32_t* slot, const int32_t* fresh) {
+  for (std::size_t i = 0; i < n; ++i) {
+    colsum[i] += fresh[i] - slot[i];
+    slot[i] = fresh[i];
+  }
+}
+
+CAIRN_MULTIVERSION
+void AddInto(std::size_t n, int32_t* acc, const int32_t* add) {
+  for (std::size_t i = 0; i < n; ++i) acc[i] += add[i];
+}
+
+// One output row: horizontal running sum over the column sums, scaled to float.
+CAIRN_MULTIVERSION
+void HorizontalPass(const int32_t* colsum, int width, int num_disp, int radius, float scale, int32_t* acc,
+                    float* out) {
+  auto col = [&](int x) { return colsum + static_cast<std::size_t>(std::clamp(x, 0, width - 1)) * num_disp; };
+  std::fill(acc, acc + num_disp, 0);
+  for (int x = -radius; x <= radius; ++x) {
+    const int32_t* c = col(x);
+    for (int k = 0; k < num_disp; ++k) acc[k] += c[k];
+  }
+  for (int x = 0; x < width; ++x) {
+    if (x > 0) {
+      const int32_t* add = col(x + radius);
+      const int32_t* sub = col(x - radius - 1);
+      for (int k = 0; k < num_disp; ++k) acc[k] += add[k] - sub[k];
+    }
+    float* o = out + static_cast<std::size_t>(x) * num_disp;
+    for (int k = 0; k < num_disp; ++k) o[k] = static_cast<float>(acc[k]) * scale;
+  }
+}
+
+}  // namespace
+
+cv::Mat ToGray8(const cv::Mat& image, const char* what) {
+  if (image.empty()) throw std::invalid_argument(std::string(what) + " image is empty; pass a loaded image");
+  if (image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
+    throw std::invalid_argument(std::string(what) + " image has OpenCV type " + std::to_string(image.type()) +
+                                " (depth " + std::to_string(image.depth()) + ", " +
+                                std::to_string(image.channels()) +
+                                " channels); stereo matching takes 8-bit grey (CV_8UC1) or BGR (CV_8UC3) images");
+  }
+  if (image.channels() == 1) return image;
+  cv::Mat gray;
+  cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+  return gray;
+}
+
+cv::Mat SobelPrefilter(const cv::Mat& gray, int size, int cap) {
+  if (gray.type() != CV_8UC1) {
+    throw std::invalid_argument("SobelPrefilter takes a CV_8UC1 image, got OpenCV type " +
+                                std::to_string(gray.type()) + "; convert with ToGray8()");
+  }
+  if (size != 3 && size != 5 && size != 7 && size != 9) {
+    throw std::invalid_argument("Sobel prefilter size " + std::to_string(size) + " is not supported; use 3, 5, 7 or 9");
+  }
+  if (cap < 1 || cap > 63) {
+    throw std::invalid_argument("Sobel prefilter cap " + std::to_string(cap) + " is outside 1..63; OpenCV uses 31");
+  }
+  // A size-s Sobel pair answers a unit ramp with 2^(s-1) * 2^(s-2); the 3x3 pair answers 8. Rescale to 3x3 units so
+  // that the cap means the same for every aperture.
+  const double scale = 8.0 / static_cast<double>(1LL << (2 * size - 3));
+  cv::Mat dx;
+  cv::Sobel(gray, dx, CV_32F, 1, 0, size, scale, 0.0, cv::BORDER_REPLICATE);
+  cv::Mat out(gray.size(), CV_8UC1);
+  for (int y = 0; y < gray.rows; ++y) {
+    const float* in = dx.ptr<float>(y);
+    uint8_t* o = out.ptr<uint8_t>(y);
+    for (int x = 0; x < gray.cols; ++x) {
+      const float v = std::clamp(in[x], static_cast<float>(-cap), static_cast<float>(cap));
+      o[x] = static_cast<uint8_t>(std::lround(v) + cap);
+    }
+  }
+  return out;
+}
+
+void ComputeCostVolume(const cv::Mat& left_image, const cv::Mat& right_image, const CostVolumeOptions& options,
+                       DisparityVolume* costs) {
+  CAIRN_CHECK(costs != nullptr);
+  const cv::Mat left_gray = ToGray8(left_image, "left");
+  const cv::Mat right_gray = ToGray8(right_image, "right");
+  if (left_gray.size() != right_gray.size()) {
+    throw std::invalid_argument("left image is " + std::to_string(left_gray.cols) + "x" +
+                                std::to_string(left_gray.rows) + " but right image is " +
+                                std::to_string(right_gray.cols) + "x" + std::to_string(right_gray.rows) +
+                                "; pass a rectified pair of equal size");
+  }
+  options.Validate(left_gray.cols);
+  cv::Mat left = left_gray;
+  cv::Mat right = right_gray;
+  if (options.prefilter == Prefilter::kSobel) {
+    left = SobelPrefilter(left_gray, options.prefilter_size, options.prefilter_cap);
+    right = SobelPrefilter(right_gray, options.prefilter_size, options.prefilter_cap);
+  }
+
+  const int width = left.cols;
+  const int height = left.rows;
+  const int dmin = options.min_disparity;
+  const int dmax = options.max_disparity;
+  const int num_disp = dmax - dmin + 1;
+  const int radius = options.window / 2;
+  const int window = options.window;
+  const bool bt = options.cost == CostFunction::kBtSad;
+  const float scale = bt ? 0.5f : 1.0f;
+  costs->Resize(height, width, dmin, dmax);
+  const std::size_t row_size = static_cast<std::size_t>(width) * num_disp;
+  const int threads = internal::ResolveThreadCount(options.num_threads);
+
+  internal::ParallelForRows(height, threads, [&](int, int y0, int y1) {
+    // Per-band workspace: a ring of `window` pixel-cost rows and their column sums.
+    RowSignals signals;
+    const std::size_t span = static_cast<std::size_t>(width + num_disp - 1);
+    signals.left.resize(width);
+    signals.right.resize(span);
+    if (bt) {
+      signals.left_min.resize(width);
+      signals.left_max.resize(width);
+      signals.right_min.resize(span);
+      signals.right_max.resize(span);
+    }
+    std::vector<int32_t> ring(row_size * window);
+    std::vector<int32_t> colsum(row_size, 0);
+    std::vector<int32_t> fresh(row_size);
+    std::vector<int32_t> acc(num_disp);
+    auto pixel_costs = [&](int y, int32_t* e) {
+      const int yc = std::clamp(y, 0, height - 1);
+      FillRow(left.ptr<uint8_t>(yc), right.ptr<uint8_t>(yc), width, dmin, num_disp, bt, &signals);
+      if (bt) {
+        PixelCostsBt(signals, width, num_disp, e);
+      } else {
+        PixelCostsSsd(signals, width, num_disp, e);
+      }
+    };
+    auto slot = [&](int y) { return ring.data() + static_cast<std::size_t>(((y % window) + window) % window) * row_size; };
+    for (int y = y0 - radius; y <= y0 + radius; ++y) {
+      pixel_costs(y, slot(y));
+      AddInto(row_size, colsum.data(), slot(y));
+    }
+    for (int y = y0; y < y1; ++y) {
+      if (y > y0) {
+        pixel_costs(y + radius, fresh.data());
+        SlideColumns(row_size, colsum.data(), slot(y + radius), fresh.data());
+      }
+      float* out = costs->mutable_curve(y, 0);
+      HorizontalPass(colsum.data(), width, num_disp, radius, scale, acc.data(), out);
+      // Disparities whose right column falls outside the image have no match.
+      constexpr float kInf = std::numeric_limits<float>::infinity();
+      for (int x = 0; x < width; ++x) {
+        float* curve = out + static_cast<std::size_t>(x) * num_disp;
+        const int k_hi = std::min(num_disp - 1, x - dmin);           // d <= x
+        const int k_lo = std::max(0, x - (width - 1) - dmin);        // d >= x - (W - 1)
+        for (int k = 0; k < k_lo && k < num_disp; ++k) curve[k] = kInf;
+        for (int k = std::max(k_hi + 1, 0); k < num_disp; ++k) curve[k] = kInf;
+      }
+    }
+  });
+}
+
+}  // namespace cairn::perception

@@ -1,0 +1,67 @@
+#include "cairn/perception/stereo/cost_volume_options.h"
+
+#include <stdexcept>
+
+#include "cairn/common/text_suggestions.h"
+
+namespace cairn::perception {
+namespace {
+
+std::string Suggest(const std::string& name, const std::vector<std::string>& choices) {
+  const auto close = ClosestNames(name, choices, 1);
+  std::string message = "; expected one of " + QuotedList(choices);
+  if (!close.empty() && EditDistance(name, close.front()) <= 2) message += " (did you mean '" + close.front() + "'?)";
+  return message;
+}
+
+}  // namespace
+
+CostFunction ParseCostFunction(const std::string& name) {
+  if (name == "ssd") return CostFunction::kSsd;
+  if (name == "btsad") return CostFunction::kBtSad;
+  throw std::invalid_argument("unknown stereo cost function '" + name + "'" + Suggest(name, {"ssd", "btsad"}));
+}
+
+std::string CostFunctionName(CostFunction cost) { return cost == CostFunction::kSsd ? "ssd" : "btsad"; }
+
+Prefilter ParsePrefilter(const std::string& name) {
+  if (name == "sobel") return Prefilter::kSobel;
+  if (name == "none") return Prefilter::kNone;
+  throw std::invalid_argument("unknown stereo prefilter '" + name + "'" + Suggest(name, {"sobel", "none"}));
+}
+
+std::string PrefilterName(Prefilter prefilter) { return prefilter == Prefilter::kSobel ? "sobel" : "none"; }
+
+void CostVolumeOptions::Validate(int image_width) const {
+  if (window < 1 || window % 2 == 0) {
+    throw std::invalid_argument("stereo window " + std::to_string(window) +
+                                " must be odd and positive (the pixel sits at its centre); use e.g. " +
+                                std::to_string(window < 1 ? 5 : window + 1));
+  }
+  if (max_disparity < min_disparity) {
+    throw std::invalid_argument("max disparity " + std::to_string(max_disparity) + " is below min disparity " +
+                                std::to_string(min_disparity) + "; swap them");
+  }
+  if (max_disparity >= image_width || -min_disparity >= image_width) {
+    throw std::invalid_argument("disparity range [" + std::to_string(min_disparity) + ", " +
+                                std::to_string(max_disparity) + "] is wider than the image (" +
+                                std::to_string(image_width) + " px); use a max disparity below " +
+                                std::to_string(image_width));
+  }
+  if (prefilter == Prefilter::kSobel) {
+    if (prefilter_size != 3 && prefilter_size != 5 && prefilter_size != 7 && prefilter_size != 9) {
+      throw std::invalid_argument("Sobel prefilter size " + std::to_string(prefilter_size) +
+                                  " is not supported; use 3, 5, 7 or 9");
+    }
+    if (prefilter_cap < 1 || prefilter_cap > 63) {
+      throw std::invalid_argument("Sobel prefilter cap " + std::to_string(prefilter_cap) +
+                                  " is outside 1..63; OpenCV's default is 31");
+    }
+  }
+  if (num_threads < 0) {
+    throw std::invalid_argument("num_threads " + std::to_string(num_threads) +
+                                " is negative; use 0 for one thread per core");
+  }
+}
+
+}  // namespace cairn::perception

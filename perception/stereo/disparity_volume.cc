@@ -1,0 +1,32 @@
+#include "cairn/perception/stereo/disparity_volume.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace cairn::perception {
+
+DisparityVolume::DisparityVolume(int height, int width, int min_disparity, int max_disparity) {
+  Resize(height, width, min_disparity, max_disparity);
+  std::fill(data_.begin(), data_.end(), 0.0f);
+}
+
+void DisparityVolume::Resize(int height, int width, int min_disparity, int max_disparity) {
+  if (height <= 0 || width <= 0) {
+    throw std::invalid_argument("DisparityVolume: the image size must be positive, got " + std::to_string(width) +
+                                "x" + std::to_string(height) + "; pass the size of the rectified images");
+  }
+  if (max_disparity < min_disparity) {
+    throw std::invalid_argument("DisparityVolume: max_disparity " + std::to_string(max_disparity) +
+                                " is below min_disparity " + std::to_string(min_disparity) +
+                                "; swap them or widen the range");
+  }
+  height_ = height;
+  width_ = width;
+  min_disparity_ = min_disparity;
+  max_disparity_ = max_disparity;
+  num_disparities_ = max_disparity - min_disparity + 1;
+  data_.resize(static_cast<std::size_t>(height) * width * num_disparities_);
+}
+
+}  // namespace cairn::perception

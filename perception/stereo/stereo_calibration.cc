@@ -1,0 +1,20 @@
+#include "cairn/perception/stereo/stereo_calibration.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace cairn::perception {
+
+void StereoCalibration::Validate() const {
+  auto check = [](double value, const char* name, const char* hint) {
+    if (!(value > 0.0) || !std::isfinite(value)) {
+      throw std::invalid_argument(std::string("stereo calibration ") + name + " = " + std::to_string(value) +
+                                  " must be positive and finite; " + hint);
+    }
+  };
+  check(fx, "fx", "give the focal length in pixels");
+  check(fy, "fy", "give the focal length in pixels");
+  check(baseline, "baseline", "give the distance between the cameras in metres");
+}
+
+}  // namespace cairn::perception

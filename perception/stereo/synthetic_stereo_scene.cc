@@ -1,0 +1,110 @@
+#include "cairn/perception/stereo/synthetic_stereo_scene.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace cairn::perception {
+
+int SyntheticStereoScene::AddPlane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                                   const ProceduralTexture& texture, int label) {
+  if (!(normal.norm() > 0.0)) {
+    throw std::invalid_argument("SyntheticStereoScene::AddPlane: the normal is zero; give the plane's normal direction");
+  }
+  const Eigen::Vector3d z = normal.normalized();
+  const Eigen::Vector3d helper = std::abs(z.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d x = (helper - helper.dot(z) * z).normalized();
+  Eigen::Isometry3d frame = Eigen::Isometry3d::Identity();
+  frame.linear().col(0) = x;
+  frame.linear().col(1) = z.cross(x);
+  frame.linear().col(2) = z;
+  frame.translation() = point;
+  objects_.push_back(Object{false, frame, Eigen::Vector3d::Zero(), texture, label});
+  return num_objects() - 1;
+}
+
+int SyntheticStereoScene::AddBox(const Eigen::Isometry3d& X_WB, const Eigen::Vector3d& half_extents,
+                                 const ProceduralTexture& texture, int label) {
+  for (int i = 0; i < 3; ++i) {
+    if (!(half_extents[i] > 0.0)) {
+      throw std::invalid_argument("SyntheticStereoScene::AddBox: half extent " + std::to_string(i) + " is " +
+                                  std::to_string(half_extents[i]) + "; every half extent must be positive");
+    }
+  }
+  objects_.push_back(Object{true, X_WB, half_extents, texture, label});
+  return num_objects() - 1;
+}
+
+std::optional<SyntheticStereoScene::Hit> SyntheticStereoScene::Intersect(const Eigen::Vector3d& origin,
+                                                                        const Eigen::Vector3d& direction) const {
+  constexpr double kEps = 1e-9;
+  std::optional<Hit> best;
+  for (int i = 0; i < num_objects(); ++i) {
+    const Object& object = objects_[i];
+    const Eigen::Vector3d o = object.X_WB.inverse() * origin;
+    const Eigen::Vector3d d = object.X_WB.linear().transpose() * direction;
+    double t = std::numeric_limits<double>::infinity();
+    double u = 0.0;
+    double v = 0.0;
+    if (!object.is_box) {
+      if (std::abs(d.z()) < kEps) continue;
+      t = -o.z() / d.z();
+      if (!(t > kEps)) continue;
+      u = o.x() + t * d.x();
+      v = o.y() + t * d.y();
+    } else {
+      // Slab test in the box frame.
+      double t_near = -std::numeric_limits<double>::infinity();
+      double t_far = std::numeric_limits<double>::infinity();
+      int axis = -1;
+      bool miss = false;
+      for (int a = 0; a < 3; ++a) {
+        const double h = object.half_extents[a];
+        if (std::abs(d[a]) < kEps) {
+          if (std::abs(o[a]) > h) miss = true;
+          continue;
+        }
+        double t0 = (-h - o[a]) / d[a];
+        double t1 = (h - o[a]) / d[a];
+        if (t0 > t1) std::swap(t0, t1);
+        if (t0 > t_near) {
+          t_near = t0;
+          axis = a;
+        }
+        t_far = std::min(t_far, t1);
+      }
+      if (miss || t_near > t_far || !(t_near > kEps) || axis < 0) continue;
+      t = t_near;
+      const Eigen::Vector3d p = o + t * d;
+      u = p[(axis + 1) % 3];
+      v = p[(axis + 2) % 3];
+    }
+    if (!best || t < best->t) best = Hit{t, i, object.label, object.texture.Evaluate(u, v)};
+  }
+  return best;
+}
+
+bool SyntheticStereoScene::Occupies(const Eigen::Vector3d& p_W, double tolerance) const {
+  for (const Object& object : objects_) {
+    const Eigen::Vector3d p = object.X_WB.inverse() * p_W;
+    if (object.is_box) {
+      if ((p.cwiseAbs() - object.half_extents).maxCoeff() <= tolerance) return true;
+    } else if (std::abs(p.z()) <= tolerance) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool SyntheticStereoScene::OccupiesCube(const Eigen::Vector3d& center, double size) const {
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      for (int k = 0; k < 5; ++k) {
+        const Eigen::Vector3d offset(i - 2, j - 2, k - 2);
+        if (Occupies(center + offset * (size / 4.0), size / 8.0)) return true;
+      }
+  return false;
+}
+
+}  // namespace cairn::perception

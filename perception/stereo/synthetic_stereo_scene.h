@@ -1,0 +1,67 @@
+#pragma once
+
+/// @file
+/// A scene of textured planes and boxes for the synthetic stereo renderer.
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "cairn/perception/stereo/procedural_texture.h"
+
+namespace cairn::perception {
+
+/// An immutable-after-construction set of textured, labelled objects: infinite planes and oriented boxes. Every
+/// object carries an integer material label (rendered as ground truth for material recognition). Texture
+/// coordinates are the object's own (box faces: the face's two in-plane box axes from the box centre; planes: an
+/// orthonormal basis from the plane's anchor point), so identical boxes with one texture look identical
+/// (which is how the repetitive-bars scene is built).
+class SyntheticStereoScene {
+ public:
+  /// The first surface a ray meets.
+  struct Hit {
+    /// Ray parameter: the hit point is origin + t * direction.
+    double t;
+    /// Index of the object hit (order of the Add calls).
+    int object;
+    /// The object's material label.
+    int label;
+    /// Texture intensity at the hit point (0..255).
+    double intensity;
+  };
+
+  /// Adds an infinite plane through `point` with normal `normal` (need not be unit; must be non-zero).
+  /// Returns the object index. Throws std::invalid_argument for a zero normal.
+  int AddPlane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, const ProceduralTexture& texture,
+               int label);
+  /// Adds a box with pose X_WB (its centre and axes in the world) and positive half extents. Returns the object
+  /// index. Throws std::invalid_argument naming a non-positive half extent.
+  int AddBox(const Eigen::Isometry3d& X_WB, const Eigen::Vector3d& half_extents, const ProceduralTexture& texture,
+             int label);
+
+  /// The nearest surface hit by the ray origin + t direction, t > 0, or nothing.
+  std::optional<Hit> Intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) const;
+
+  /// Whether the point is inside a box or within `tolerance` of a plane: the scene's ground-truth occupancy.
+  bool Occupies(const Eigen::Vector3d& p_W, double tolerance = 0.0) const;
+
+  /// Whether any part of the axis-aligned cube centred at `center` with side `size` is occupied (tested on a
+  /// 5 x 5 x 5 lattice of points spanning the cube), used to rasterise ground-truth grids of thin objects.
+  bool OccupiesCube(const Eigen::Vector3d& center, double size) const;
+
+  /// Number of objects.
+  int num_objects() const { return static_cast<int>(objects_.size()); }
+
+ private:
+  struct Object {
+    bool is_box;
+    Eigen::Isometry3d X_WB;        // box pose, or plane frame (z = normal) at its anchor
+    Eigen::Vector3d half_extents;  // boxes only
+    ProceduralTexture texture;
+    int label;
+  };
+  std::vector<Object> objects_;
+};
+
+}  // namespace cairn::perception

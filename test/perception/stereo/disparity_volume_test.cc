@@ -1,0 +1,26 @@
+#include "cairn/perception/stereo/disparity_volume.h"
+
+#include <stdexcept>
+
+#include "expect_throws.h"
+
+namespace cairn::perception {
+namespace {
+
+TEST(DisparityVolumeTest, CurvesArePixelMajorAndContiguous) {
+  DisparityVolume volume(2, 3, -1, 2);
+  EXPECT_EQ(volume.num_disparities(), 4);
+  EXPECT_EQ(volume.data().size(), 2u * 3u * 4u);
+  volume.mutable_curve(1, 2)[3] = 7.0f;
+  EXPECT_EQ(volume.at(1, 2, 3), 7.0f);
+  EXPECT_EQ(volume.data().back(), 7.0f);
+  EXPECT_EQ(volume.curve(0, 1) - volume.curve(0, 0), 4);
+}
+
+TEST(DisparityVolumeTest, RejectsBadShapes) {
+  CAIRN_EXPECT_THROWS_WITH(DisparityVolume(0, 3, 0, 1), std::invalid_argument, "3x0");
+  CAIRN_EXPECT_THROWS_WITH(DisparityVolume(2, 3, 5, 1), std::invalid_argument, "max_disparity 1", "swap");
+}
+
+}  // namespace
+}  // namespace cairn::perception

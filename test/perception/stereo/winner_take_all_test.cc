@@ -1,0 +1,61 @@
+#include "cairn/perception/stereo/winner_take_all.h"
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "cairn/perception/stereo/compute_cost_volume.h"
+#include "expect_throws.h"
+
+namespace cairn::perception {
+namespace {
+
+TEST(WinnerTakeAllTest, SubpixelPeakRatioAndInvalidPixels) {
+  DisparityVolume costs(1, 2, 0, 5);
+  const float curve[6] = {9.0f, 4.0f, 1.0f, 3.0f, 2.0f, 8.0f};  // minimum at 2, other local minimum 2 at k=4
+  std::copy(curve, curve + 6, costs.mutable_curve(0, 0));
+  for (int k = 0; k < 6; ++k) costs.mutable_curve(0, 1)[k] = std::numeric_limits<float>::infinity();
+  WtaResult result;
+  ComputeWinnerTakeAll(costs, WtaOptions{}, &result);
+  EXPECT_EQ(result.best_index.at<int32_t>(0, 0), 2);
+  EXPECT_FLOAT_EQ(result.best_cost.at<float>(0, 0), 1.0f);
+  // Parabola through (1,4), (2,1), (3,3): vertex at 2 + (4 - 3) / (2 * 5) = 2.1.
+  EXPECT_NEAR(result.disparity.at<float>(0, 0), 2.1f, 1e-6);
+  EXPECT_FLOAT_EQ(result.peak_ratio.at<float>(0, 0), 2.0f);
+  EXPECT_EQ(result.best_index.at<int32_t>(0, 1), -1);
+  EXPECT_TRUE(std::isnan(result.disparity.at<float>(0, 1)));
+}
+
+TEST(WinnerTakeAllTest, RecoversAShiftAndChecksLeftRight) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> value(0, 255);
+  cv::Mat right(30, 80, CV_8UC1);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 80; ++x) right.at<uint8_t>(y, x) = static_cast<uint8_t>(value(rng));
+  cv::Mat left(30, 80, CV_8UC1);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 80; ++x) left.at<uint8_t>(y, x) = right.at<uint8_t>(y, std::max(0, x - 6));
+  CostVolumeOptions options;
+  options.max_disparity = 15;
+  options.window = 5;
+  options.prefilter = Prefilter::kNone;
+  DisparityVolume costs;
+  ComputeCostVolume(left, right, options, &costs);
+  WtaResult result;
+  ComputeWinnerTakeAll(costs, WtaOptions{}, &result);
+  int consistent = 0;
+  for (int y = 3; y < 27; ++y) {
+    for (int x = 20; x < 75; ++x) {
+      EXPECT_EQ(result.best_index.at<int32_t>(y, x), 6);
+      EXPECT_NEAR(result.disparity.at<float>(y, x), 6.0f, 0.5f);
+      consistent += result.lr_consistent.at<uint8_t>(y, x) != 0 ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(consistent, 24 * 55);
+  WtaOptions bad;
+  bad.lr_tolerance = -1;
+  CAIRN_EXPECT_THROWS_WITH(ComputeWinnerTakeAll(costs, bad, &result), std::invalid_argument, "lr_tolerance -1");
+}
+
+}  // namespace
+}  // namespace cairn::perception
