@@ -1,0 +1,31 @@
+#include "cairn/optimization/solvers/solver_options.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "../throws_message.h"
+
+namespace cairn::optimization {
+namespace {
+
+using test::MessageOf;
+using ::testing::HasSubstr;
+
+TEST(SolverOptionsTest, StoresTypedValuesPerSolver) {
+  SolverOptions options;
+  options.Set("ipopt", "max_iter", 50);
+  options.Set("ipopt", "tol", 1e-9);
+  options.Set("ipopt", "mu_strategy", "adaptive");
+  options.Set("nlopt", "maxeval", 10);
+  EXPECT_EQ(options.solver_keys(), (std::vector<std::string>{"ipopt", "nlopt"}));
+  EXPECT_EQ(std::get<int>(options.Get("ipopt").at("max_iter")), 50);
+  EXPECT_EQ(std::get<std::string>(options.Get("ipopt").at("mu_strategy")), "adaptive");
+  EXPECT_TRUE(options.Get("least_squares").empty());
+  EXPECT_EQ(SolverOptions::ToString(options.Get("ipopt").at("tol")), "1e-09");
+  EXPECT_EQ(SolverOptions::ToString(options.Get("ipopt").at("mu_strategy")), "'adaptive'");
+  EXPECT_THAT(MessageOf<std::invalid_argument>([&] { options.Set("", "tol", 1.0); }),
+              HasSubstr("both the solver key (e.g. 'ipopt') and the option name must be non-empty"));
+}
+
+}  // namespace
+}  // namespace cairn::optimization
