@@ -10,6 +10,9 @@ void RegisterDiagramCommand(CommandRegistry* registry);
 void RegisterStereoEvalCommand(CommandRegistry* registry);
 void RegisterOccupancyCommand(CommandRegistry* registry);
 void RegisterModelInfoCommand(CommandRegistry* registry);
+void RegisterFrictionCommand(CommandRegistry* registry);
+void RegisterFrictionTrainCommand(CommandRegistry* registry);
+void RegisterFrictionDatasetCommand(CommandRegistry* registry);
 
 void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPendulumCommand(registry);
@@ -17,7 +20,9 @@ void RegisterAllCommands(CommandRegistry* registry) {
   RegisterStereoEvalCommand(registry);
   RegisterOccupancyCommand(registry);
   RegisterModelInfoCommand(registry);
-  (void)registry;
+  RegisterFrictionCommand(registry);
+  RegisterFrictionTrainCommand(registry);
+  RegisterFrictionDatasetCommand(registry);
 }
 
 }  // namespace cairn::cli

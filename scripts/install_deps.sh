@@ -1,8 +1,18 @@
 #!/usr/bin/env bash
 # Installs every Debian package Cairn needs to build, test and benchmark.
-# Non-interactive and idempotent: packages already present are not touched, and
+#   scripts/install_deps.sh [--training-tools]
+# --training-tools also installs what scripts/train_material_net.py needs (PyTorch, ONNX, Pillow: large, and
+# needed by no build or test). Non-interactive and idempotent: packages already present are not touched, and
 # `apt-get update` runs at most once, only when something is missing.
 set -euo pipefail
+
+with_training_tools=0
+for arg in "$@"; do
+  case "$arg" in
+    --training-tools) with_training_tools=1 ;;
+    *) echo "install_deps.sh: unknown option '$arg' (known: --training-tools)" >&2; exit 2 ;;
+  esac
+done
 
 # Libraries linked into Cairn, the build toolchain, and the test/benchmark frameworks.
 CORE_PACKAGES=(
@@ -16,16 +26,21 @@ CORE_PACKAGES=(
 PEER_PACKAGES=(
   libdart-dev libdart-utils-urdf-dev dart-doc liboctomap-dev
 )
+# Tool scripts only (scripts/train_material_net.py); no test or library needs them.
+SCRIPT_PACKAGES=()
+if [ "$with_training_tools" -eq 1 ]; then
+  SCRIPT_PACKAGES=(python3-torch python3-onnx python3-pil)
+fi
 
 missing=()
-for pkg in "${CORE_PACKAGES[@]}" "${PEER_PACKAGES[@]}"; do
+for pkg in "${CORE_PACKAGES[@]}" "${PEER_PACKAGES[@]}" ${SCRIPT_PACKAGES[@]+"${SCRIPT_PACKAGES[@]}"}; do
   if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
     missing+=("$pkg")
   fi
 done
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install_deps: all ${#CORE_PACKAGES[@]} core and ${#PEER_PACKAGES[@]} peer packages are installed."
+  echo "install_deps: all ${#CORE_PACKAGES[@]} core, ${#PEER_PACKAGES[@]} peer and ${#SCRIPT_PACKAGES[@]} script packages are installed."
   exit 0
 fi
 

@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include "cairn/perception/internal/fast_log.h"
 #include "cairn/perception/internal/parallel_rows.h"
 #include "cairn/perception/occupancy/occupancy_grid.h"
 #include "cairn/perception/stereo/stereo_calibration.h"
@@ -38,8 +39,12 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
                    const Eigen::Isometry3d& X_WC, const RayIntegrationOptions& options, const Curve& curve,
                    OccupancyGrid* grid) {
   const int threads = ResolveThreadCount(options.num_threads);
-  std::vector<std::vector<float>> sums(threads, std::vector<float>(grid->num_cells(), 0.0f));
-  std::vector<std::vector<uint16_t>> counts(threads, std::vector<uint16_t>(grid->num_cells(), 0));
+  // Sum and count side by side: one cache line per cell visit instead of two.
+  struct Accumulator {
+    float sum;
+    uint32_t count;
+  };
+  std::vector<std::vector<Accumulator>> accumulators(threads, std::vector<Accumulator>(grid->num_cells(), {0.0f, 0}));
   const double fb = calibration.depth_times_disparity();
   const Eigen::Vector3d origin = X_WC.translation();
   const Eigen::Matrix3d R_WC = X_WC.linear();
@@ -51,8 +56,7 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
   ParallelForRows(height, threads, [&](int thread, int y0, int y1) {
     std::vector<float> c(num_disp);
     std::vector<float> prefix(num_disp + 1);
-    float* sum = sums[thread].data();
-    uint16_t* count = counts[thread].data();
+    Accumulator* accumulator = accumulators[thread].data();
     for (int y = y0; y < y1; ++y) {
       for (int x = 0; x < width; ++x) {
         if (!curve(y, x, c.data())) continue;
@@ -63,11 +67,17 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
         const float inverse_total = 1.0f / total;
         const Eigen::Vector3d direction =
             R_WC * Eigen::Vector3d((x - calibration.cx) / calibration.fx, (y - calibration.cy) / calibration.fy, 1.0);
+        // The walk visits cells back to back, so a cell's near side is the previous cell's far side: one
+        // division per cell.
+        double previous_t_out = -1.0;
+        double previous_delta_out = 0.0;
         grid->Traverse(origin, direction, t_near, t_far, [&](std::size_t index, double t_in, double t_out) {
           // The disparity samples this cell stands for: those whose centres it covers, or, for a cell thinner
           // than a disparity step, the one containing its middle.
-          const double delta_in = fb / t_in - dmin;    // near side: larger disparity
-          const double delta_out = fb / t_out - dmin;  // far side
+          const double delta_in = t_in == previous_t_out ? previous_delta_out : fb / t_in - dmin;  // near side
+          const double delta_out = fb / t_out - dmin;  // far side: smaller disparity
+          previous_t_out = t_out;
+          previous_delta_out = delta_out;
           int k_lo = static_cast<int>(std::ceil(delta_out));
           int k_hi = static_cast<int>(std::floor(delta_in));
           if (k_lo > k_hi) k_lo = k_hi = static_cast<int>(std::lround(0.5 * (delta_in + delta_out)));
@@ -81,8 +91,8 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
           const float mass = (prefix[k_hi + 1] - prefix[k_lo]) * inverse_total;
           float p = mass + 0.5f * (1.0f - beyond);
           p = std::min(hi, std::max(lo, p));
-          sum[index] += std::log(p / (1.0f - p));
-          if (count[index] < UINT16_MAX) ++count[index];
+          accumulator[index].sum += LogPositive(p / (1.0f - p));
+          ++accumulator[index].count;
           return beyond > 1e-4f;
         });
       }
@@ -92,8 +102,8 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
     float s = 0.0f;
     int n = 0;
     for (int t = 0; t < threads; ++t) {
-      s += sums[t][i];
-      n += counts[t][i];
+      s += accumulators[t][i].sum;
+      n += static_cast<int>(accumulators[t][i].count);
     }
     if (n > 0) grid->Update(i, s / static_cast<float>(n));
   }

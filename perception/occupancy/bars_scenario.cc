@@ -27,13 +27,19 @@ BarsScenario BarsScenario::Make(int frames) {
     s.bars.emplace_back();
     s.bars.back().AddBox(X_WB, half, bar_texture, 1);
   }
+  // The wall must be matchable between the bars, or nothing can clear the space behind them: its disparity
+  // jump from the bars (30 - fb / depth px) is the width of the band beside each bar that the right camera cannot
+  // see, and the gaps between bars are 22 px wide. A wall 10 m away (jump 21 px) is hidden from one camera almost
+  // everywhere, so every background pixel matches a bar-like disparity and paints false surfaces 10-30 cm behind
+  // the bars; at 1 m behind the bars (jump 7.5 px) two thirds of each gap is seen by both cameras. The texture
+  // is as fine and contrasted as the bars' so that the wall is matched as reliably as they are.
   ProceduralTexture wall;
   wall.kind = ProceduralTexture::Kind::kNoise;
-  wall.scale = 0.4;
+  wall.scale = 0.05;
   wall.mean = 70.0;
-  wall.contrast = 25.0;
+  wall.contrast = 50.0;
   wall.seed = 3;
-  s.scene.AddPlane(Eigen::Vector3d(0.0, 10.0, 0.0), Eigen::Vector3d(0.0, -1.0, 0.0), wall, 2);
+  s.scene.AddPlane(center + Eigen::Vector3d(0.0, 1.0, 0.0), Eigen::Vector3d(0.0, -1.0, 0.0), wall, 2);
   const double radius = 3.0;
   for (int f = 0; f < frames; ++f) {
     const double angle = frames == 1 ? 0.0 : (-25.0 + 50.0 * f / (frames - 1)) * M_PI / 180.0;

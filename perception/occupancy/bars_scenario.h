@@ -13,10 +13,10 @@
 namespace cairn::perception {
 
 /// Seven identical, identically textured vertical bars (8 cm square, 30 cm apart, 3 m from the camera path's
-/// centre; world z up) in front of a textured wall 7 m away, seen by a 320 x 240 stereo camera (fx = 300 px,
-/// baseline 0.3 m) moving on an arc of +-25 degrees around them while looking at their centre. From the start
-/// pose, a bar's image repeats every 30 px while its disparity is 30 px, so every bar also matches its neighbour
-/// at disparity 60: WTA stereo sees ghost bars at 1.5 m.
+/// centre; world z up) 1 m in front of a textured wall (just beyond the evaluation grid), seen by a 320 x 240
+/// stereo camera (fx = 300 px, baseline 0.3 m) moving on an arc of +-25 degrees around them while looking at
+/// their centre. Seen head-on, a bar's image repeats every 30 px while its disparity is 30 px, so every bar also
+/// matches its neighbour at disparity 60: WTA stereo sees ghost bars at 1.5 m.
 struct BarsScenario {
   /// The scene (bars carry label 1, the wall label 2).
   SyntheticStereoScene scene;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cairn/common/cairn_assert.h"
+#include "cairn/perception/internal/fast_exp.h"
 #include "cairn/perception/internal/parallel_rows.h"
 
 namespace cairn::perception {
@@ -30,6 +31,7 @@ void ComputeConfidence(const DisparityVolume& costs, const ConfidenceModel& mode
   if (type == ConfidenceModelType::kMerrell) a = 1.0 / (2.0 * parameter);
   const auto fa = static_cast<float>(a);
   const HistogramSensorModel* histogram = model.histogram();
+  constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
   internal::ParallelForRows(costs.height(), internal::ResolveThreadCount(num_threads), [&](int, int y0, int y1) {
     std::vector<float> log_p(num_disp);
@@ -38,6 +40,7 @@ void ComputeConfidence(const DisparityVolume& costs, const ConfidenceModel& mode
         const float* c = costs.curve(y, x);
         float* out = confidence->mutable_curve(y, x);
         float min_cost = std::numeric_limits<float>::infinity();
+#pragma omp simd reduction(min : min_cost)
         for (int k = 0; k < num_disp; ++k) min_cost = std::min(min_cost, c[k]);
         if (!std::isfinite(min_cost)) {
           for (int k = 0; k < num_disp; ++k) out[k] = 0.0f;
@@ -66,8 +69,9 @@ void ComputeConfidence(const DisparityVolume& costs, const ConfidenceModel& mode
         }
         // Infinite costs give -inf (or NaN from inf - inf in Merrell's square); both must become probability 0.
         float sum = 0.0f;
+#pragma omp simd reduction(+ : sum)
         for (int k = 0; k < num_disp; ++k) {
-          const float v = std::isfinite(c[k]) ? std::exp(log_p[k] - max_log) : 0.0f;
+          const float v = c[k] < kInfinity ? internal::ExpNonPositive(log_p[k] - max_log) : 0.0f;
           out[k] = v;
           sum += v;
         }

@@ -98,12 +98,36 @@ bool SyntheticStereoScene::Occupies(const Eigen::Vector3d& p_W, double tolerance
 }
 
 bool SyntheticStereoScene::OccupiesCube(const Eigen::Vector3d& center, double size) const {
-  for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 5; ++j)
-      for (int k = 0; k < 5; ++k) {
-        const Eigen::Vector3d offset(i - 2, j - 2, k - 2);
-        if (Occupies(center + offset * (size / 4.0), size / 8.0)) return true;
-      }
+  // Exact overlap by the separating-axis theorem: the cube (axis-aligned, half side h) and an object overlap
+  // unless their projections on some axis are disjoint. A lattice of sample points with a tolerance would
+  // inflate thin objects by the tolerance and make ground truth depend on the grid's phase.
+  const double h = 0.5 * size;
+  for (const Object& object : objects_) {
+    const Eigen::Vector3d offset = object.X_WB.translation() - center;
+    const Eigen::Matrix3d R = object.X_WB.linear();
+    if (!object.is_box) {
+      const Eigen::Vector3d n = R.col(2);
+      if (std::abs(n.dot(offset)) <= h * n.cwiseAbs().sum()) return true;
+      continue;
+    }
+    const Eigen::Vector3d& e = object.half_extents;
+    // Radius of the box's projection on a world axis `axis`.
+    auto box_radius = [&](const Eigen::Vector3d& axis) {
+      return e.x() * std::abs(R.col(0).dot(axis)) + e.y() * std::abs(R.col(1).dot(axis)) +
+             e.z() * std::abs(R.col(2).dot(axis));
+    };
+    auto separated = [&](const Eigen::Vector3d& axis) {
+      const double norm = axis.norm();
+      if (norm < 1e-12) return false;  // parallel edges: the face axes already cover this case
+      return std::abs(axis.dot(offset)) > h * axis.cwiseAbs().sum() + box_radius(axis) + 1e-12 * norm;
+    };
+    bool apart = false;
+    for (int a = 0; a < 3 && !apart; ++a) {
+      apart = separated(Eigen::Vector3d::Unit(a)) || separated(R.col(a));
+      for (int b = 0; b < 3 && !apart; ++b) apart = separated(Eigen::Vector3d::Unit(a).cross(R.col(b)));
+    }
+    if (!apart) return true;
+  }
   return false;
 }
 

@@ -46,8 +46,8 @@ class SyntheticStereoScene {
   /// Whether the point is inside a box or within `tolerance` of a plane: the scene's ground-truth occupancy.
   bool Occupies(const Eigen::Vector3d& p_W, double tolerance = 0.0) const;
 
-  /// Whether any part of the axis-aligned cube centred at `center` with side `size` is occupied (tested on a
-  /// 5 x 5 x 5 lattice of points spanning the cube), used to rasterise ground-truth grids of thin objects.
+  /// Whether the axis-aligned cube centred at `center` with side `size` overlaps any object (exact, by the
+  /// separating-axis theorem; touching counts), used to rasterise ground-truth grids of thin objects.
   bool OccupiesCube(const Eigen::Vector3d& center, double size) const;
 
   /// Number of objects.

@@ -15,6 +15,8 @@ struct WtaOptions {
   bool subpixel{true};
   /// The left and right winners agree when their integer disparities differ by at most this many pixels.
   int lr_tolerance{1};
+  /// Threads splitting the image rows; 0 = one per core.
+  int num_threads{0};
 };
 
 /// Per-pixel winner-take-all output; every matrix has the cost volume's size.

@@ -114,10 +114,13 @@ TEST_F(BarsScenarioTest, CostCurveGridRecoversAllSevenBarsAndWtaDoesNot) {
     std::printf("WTA peak ratio %.1f:     precision %.3f recall %.3f (tp %zu fp %zu n %zu) bars %d min bar recall %.3f\n",
                 ratios[i], w.score.precision, w.score.recall, w.score.true_positives, w.score.false_positives,
                 w.score.num_occupied, w.bars_found, w.min_bar_recall);
-    // Measured (noise-free, 20 frames): cost-curve precision 0.194 vs WTA 0.114-0.116. The WTA grids carry more
-    // than 1.5 times the cost-curve grid's false positives at every threshold.
-    EXPECT_GT(cc.score.precision, 1.5 * w.score.precision) << "peak ratio " << ratios[i];
-    EXPECT_GT(w.score.false_positives, cc.score.false_positives + cc.score.false_positives / 2);
+    // Measured (noise-free, 20 frames, 5 cm cells): cost-curve precision 0.493 (fp 344, a one-cell halo round
+    // each bar: the disparity step is 10 cm at 3 m and the 9x9 window fattens the bars by 4 px) against WTA
+    // 0.217-0.220 (fp ~1200: ghost bars and halo). The 0.9 is out of reach at 5 cm cells with a 10 cm
+    // depth step; see the report.
+    EXPECT_GT(cc.score.precision, 0.45);
+    EXPECT_GT(cc.score.precision, 2.0 * w.score.precision) << "peak ratio " << ratios[i];
+    EXPECT_GT(w.score.false_positives, 3 * cc.score.false_positives) << "peak ratio " << ratios[i];
   }
 }
 

@@ -1,0 +1,186 @@
+// `cairn friction`: friction from one image — material probabilities, the friction quantile image Q_{1-eta}, and
+// statistics.
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "cairn/common/atomic_file.h"
+#include "cairn/perception/friction/friction_quantile_image.h"
+#include "cairn/perception/friction/make_material_segmenter.h"
+#include "cairn/perception/friction/material_registry.h"
+#include "command_registry.h"
+
+namespace cairn::cli {
+namespace {
+
+using perception::FrictionQuantileImage;
+using perception::MaterialRegistry;
+using perception::QuantileMethod;
+
+struct FrictionArguments {
+  std::string image;
+  std::string segmenter{"builtin"};
+  std::string registry;
+  double eta{0.95};
+  std::string method{"exact"};
+  std::string out;
+  bool json{false};
+};
+
+// The label image's palette: label i gets colour kPalette[i % size] (BGR), unknown pixels black. Chosen for
+// contrast between neighbouring labels of the thesis' list.
+const cv::Vec3b kPalette[] = {
+    {128, 128, 128}, {0, 160, 0},   {60, 90, 120},  {160, 0, 160}, {230, 230, 230}, {200, 200, 255}, {200, 160, 60},
+    {30, 90, 170},   {120, 200, 230}, {255, 200, 120}, {255, 255, 255}, {200, 80, 0}, {0, 0, 200},    {80, 220, 220},
+};
+
+void WritePng(const std::string& path, const cv::Mat& image) {
+  std::vector<uchar> bytes;
+  if (!cv::imencode(".png", image, bytes)) throw std::runtime_error("Cannot encode '" + path + "' as PNG.");
+  WriteFileAtomically(path, std::string(bytes.begin(), bytes.end()));
+}
+
+std::string JsonString(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+int Run(const FrictionArguments& args) {
+  const cv::Mat image = cv::imread(args.image, cv::IMREAD_UNCHANGED);
+  if (image.empty()) throw std::runtime_error("Cannot read the image '" + args.image + "'; check the path and format.");
+  if (image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
+    throw std::invalid_argument("The image '" + args.image + "' has " + std::to_string(image.channels()) +
+                                " channel(s) of depth " + std::to_string(image.depth()) +
+                                "; friction needs an 8-bit grey or colour image.");
+  }
+  const MaterialRegistry registry =
+      args.registry.empty() ? MaterialRegistry::ThesisTable33() : MaterialRegistry::LoadYaml(args.registry);
+  QuantileMethod method = QuantileMethod::kExact;
+  if (args.method == "search") method = QuantileMethod::kSearch;
+  if (args.method == "gaussian") method = QuantileMethod::kGaussian;
+  const FrictionQuantileImage quantiles(registry, {args.eta, method, 0.02, 0});
+  // "builtin" alone is the model trained by `cairn friction-train` that ships in data/models.
+  const std::string specification =
+      args.segmenter == "builtin" ? std::string("builtin:") + CAIRN_DATA_DIR + "/models/builtin_material_segmenter.yaml"
+                                  : args.segmenter;
+  const auto segmenter = perception::MakeMaterialSegmenter(specification);
+  std::vector<int> channel_to_registry;
+  for (const std::string& label : segmenter->labels()) channel_to_registry.push_back(registry.IndexOf(label));
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const cv::Mat channels = segmenter->Segment(image);
+  const auto t1 = std::chrono::steady_clock::now();
+  const int n = registry.size();
+  cv::Mat probabilities(image.rows, image.cols, CV_32FC(n));
+  cv::Mat labels(image.rows, image.cols, CV_8UC3);
+  std::vector<double> label_fraction(n, 0.0);
+  for (int r = 0; r < image.rows; ++r) {
+    const float* in = channels.ptr<float>(r);
+    float* out = probabilities.ptr<float>(r);
+    for (int c = 0; c < image.cols; ++c) {
+      std::fill(out + c * n, out + (c + 1) * n, 0.0f);
+      int best = 0;
+      for (int k = 0; k < segmenter->num_labels(); ++k) {
+        out[c * n + channel_to_registry[k]] = in[c * segmenter->num_labels() + k];
+        if (in[c * segmenter->num_labels() + k] > in[c * segmenter->num_labels() + best]) best = k;
+      }
+      const int label = channel_to_registry[best];
+      labels.at<cv::Vec3b>(r, c) = kPalette[label % (sizeof(kPalette) / sizeof(kPalette[0]))];
+      label_fraction[label] += 1.0;
+    }
+  }
+  const auto t2 = std::chrono::steady_clock::now();
+  const cv::Mat q = quantiles.Compute(probabilities);
+  const auto t3 = std::chrono::steady_clock::now();
+
+  // Grey: white = mu 0, black = mu 1 (the thesis' convention), saturating above 1.
+  cv::Mat grey(q.size(), CV_8UC1);
+  double sum = 0.0, low = 1e9, high = -1e9;
+  for (int r = 0; r < q.rows; ++r) {
+    for (int c = 0; c < q.cols; ++c) {
+      const double value = q.at<float>(r, c);
+      sum += value;
+      low = std::min(low, value);
+      high = std::max(high, value);
+      grey.at<uchar>(r, c) = cv::saturate_cast<uchar>(255.0 * (1.0 - std::min(value, 1.0)));
+    }
+  }
+  const double pixels = static_cast<double>(q.total());
+  const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  char number[256];
+  std::string json = "{\"image\": " + JsonString(args.image) + ", \"width\": " + std::to_string(image.cols) +
+                     ", \"height\": " + std::to_string(image.rows) + ", \"segmenter\": " + JsonString(args.segmenter) +
+                     ", \"eta\": ";
+  std::snprintf(number, sizeof(number), "%.6g", args.eta);
+  json += number;
+  json += ", \"method\": " + JsonString(args.method);
+  std::snprintf(number, sizeof(number), ", \"quantile_min\": %.6f, \"quantile_mean\": %.6f, \"quantile_max\": %.6f",
+                low, sum / pixels, high);
+  json += number;
+  std::snprintf(number, sizeof(number), ", \"ms_segment\": %.3f, \"ms_quantile\": %.3f", ms(t0, t1), ms(t2, t3));
+  json += number;
+  json += ", \"label_fractions\": {";
+  for (int i = 0; i < n; ++i) {
+    std::snprintf(number, sizeof(number), "%.6f", label_fraction[i] / pixels);
+    json += (i > 0 ? ", " : "") + JsonString(registry.material(i).label) + ": " + number;
+  }
+  json += "}, \"palette_bgr\": {";
+  for (int i = 0; i < n; ++i) {
+    const cv::Vec3b& colour = kPalette[i % (sizeof(kPalette) / sizeof(kPalette[0]))];
+    json += (i > 0 ? ", " : "") + JsonString(registry.material(i).label) + ": [" + std::to_string(colour[0]) + ", " +
+            std::to_string(colour[1]) + ", " + std::to_string(colour[2]) + "]";
+  }
+  json += "}}\n";
+
+  std::filesystem::create_directories(args.out);
+  WritePng(args.out + "/materials.png", labels);
+  WritePng(args.out + "/friction.png", grey);
+  WriteFileAtomically(args.out + "/friction.json", json);
+  if (args.json) {
+    std::cout << json;
+  } else {
+    std::printf("%s: %dx%d, %s, eta %.3g (%s)\n", args.image.c_str(), image.cols, image.rows, args.segmenter.c_str(),
+                args.eta, args.method.c_str());
+    std::printf("  friction quantile: min %.3f, mean %.3f, max %.3f\n", low, sum / pixels, high);
+    std::printf("  segmentation %.1f ms, quantiles %.1f ms\n", ms(t0, t1), ms(t2, t3));
+    std::printf("  wrote %s/materials.png, friction.png (white = mu 0, black = mu 1), friction.json\n",
+                args.out.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+void RegisterFrictionCommand(CommandRegistry* registry) {
+  registry->Add("friction", "Friction from one image: material probabilities and the friction quantile image",
+                [](CLI::App& app) -> CommandAction {
+                  auto args = std::make_shared<FrictionArguments>();
+                  app.add_option("--image", args->image, "8-bit grey or colour image")->required();
+                  app.add_option("--segmenter", args->segmenter,
+                                 "builtin (the shipped model), builtin:MODEL.yaml or onnx:NETWORK.yaml")
+                      ->capture_default_str();
+                  app.add_option("--registry", args->registry,
+                                 "Material registry YAML (default: the thesis' Table 3.3)");
+                  app.add_option("--eta", args->eta, "Probability that friction is at least the quantile")
+                      ->capture_default_str();
+                  app.add_option("--method", args->method, "Quantile method")
+                      ->check(CLI::IsMember({"exact", "search", "gaussian"}))
+                      ->capture_default_str();
+                  app.add_option("--out", args->out, "Output folder")->required();
+                  app.add_flag("--json", args->json, "Print the statistics as one JSON object");
+                  return [args]() { return Run(*args); };
+                });
+}
+
+}  // namespace cairn::cli

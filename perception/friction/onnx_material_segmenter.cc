@@ -1,0 +1,190 @@
+#include "cairn/perception/friction/onnx_material_segmenter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <mutex>
+#include <stdexcept>
+#include <utility>
+
+#include <opencv2/dnn.hpp>
+#include <opencv2/imgproc.hpp>
+#include <yaml-cpp/yaml.h>
+
+namespace cairn::perception {
+
+struct OnnxMaterialSegmenter::Network {
+  cv::dnn::Net net;
+  std::mutex mutex;
+};
+
+namespace {
+
+[[noreturn]] void BadKey(const std::string& path, const std::string& key, const std::string& expected) {
+  throw std::invalid_argument("OnnxMaterialSegmenter: '" + path + "': key '" + key + "' " + expected);
+}
+
+std::string FolderOf(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
+}
+
+// Runs the network on `bgr` (8-bit, 3 channels) and returns the raw 1 x C x H x W output.
+cv::Mat Forward(cv::dnn::Net* net, std::mutex* mutex, const OnnxMaterialSegmenter::Preprocessing& pre,
+                const cv::Mat& bgr) {
+  const cv::Mat blob = cv::dnn::blobFromImage(bgr, pre.scale, cv::Size(pre.width, pre.height),
+                                              cv::Scalar(pre.mean[0], pre.mean[1], pre.mean[2]), pre.rgb, false,
+                                              CV_32F);
+  std::lock_guard<std::mutex> lock(*mutex);
+  net->setInput(blob);
+  return net->forward().clone();
+}
+
+}  // namespace
+
+OnnxMaterialSegmenter::OnnxMaterialSegmenter(std::vector<std::string> labels, Preprocessing preprocessing,
+                                             std::string model_path, std::shared_ptr<Network> network)
+    : MaterialSegmenter(std::move(labels)),
+      preprocessing_(std::move(preprocessing)),
+      model_path_(std::move(model_path)),
+      network_(std::move(network)) {}
+
+OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(yaml_path);
+  } catch (const YAML::BadFile&) {
+    throw std::runtime_error("OnnxMaterialSegmenter: cannot open '" + yaml_path +
+                             "'; pass the YAML that describes the model (e.g. data/models/tiny_material_net.yaml).");
+  } catch (const YAML::Exception& error) {
+    throw std::runtime_error("OnnxMaterialSegmenter: '" + yaml_path + "' is not valid YAML (line " +
+                             std::to_string(error.mark.line + 1) + ": " + error.msg + ").");
+  }
+  if (!root.IsMap()) BadKey(yaml_path, "<root>", "must be a map with keys model, labels and input.");
+  std::vector<std::string> labels;
+  std::string model;
+  Preprocessing pre;
+  try {
+    if (!root["model"] || !root["model"].IsScalar()) BadKey(yaml_path, "model", "must name the .onnx file.");
+    model = root["model"].as<std::string>();
+    if (!root["labels"] || !root["labels"].IsSequence() || root["labels"].size() == 0) {
+      BadKey(yaml_path, "labels", "must be a non-empty list, one label per output channel.");
+    }
+    labels = root["labels"].as<std::vector<std::string>>();
+    const YAML::Node input = root["input"];
+    if (!input || !input.IsMap()) {
+      BadKey(yaml_path, "input", "must be a map with width, height, channel_order, mean and scale.");
+    }
+    pre.width = input["width"] ? input["width"].as<int>() : 0;
+    pre.height = input["height"] ? input["height"].as<int>() : 0;
+    if (pre.width <= 0 || pre.height <= 0) {
+      BadKey(yaml_path, "input.width/height", "must be positive integers; got " + std::to_string(pre.width) + "x" +
+                                                  std::to_string(pre.height) + ".");
+    }
+    const std::string order = input["channel_order"] ? input["channel_order"].as<std::string>() : "";
+    if (order != "rgb" && order != "bgr") {
+      BadKey(yaml_path, "input.channel_order", "must be 'rgb' or 'bgr'; got '" + order + "'.");
+    }
+    pre.rgb = order == "rgb";
+    if (input["mean"]) {
+      const auto mean = input["mean"].as<std::vector<double>>();
+      if (mean.size() != 3) {
+        BadKey(yaml_path, "input.mean", "must have 3 values (one per channel); got " + std::to_string(mean.size()) +
+                                            ".");
+      }
+      pre.mean = Eigen::Vector3d(mean[0], mean[1], mean[2]);
+    }
+    pre.scale = input["scale"] ? input["scale"].as<double>() : 1.0;
+    if (!(pre.scale > 0.0) || !std::isfinite(pre.scale)) {
+      BadKey(yaml_path, "input.scale", "must be positive; got " + std::to_string(pre.scale) + ".");
+    }
+  } catch (const YAML::Exception& error) {
+    throw std::invalid_argument("OnnxMaterialSegmenter: '" + yaml_path + "' has a value of the wrong type (line " +
+                                std::to_string(error.mark.line + 1) + ": " + error.msg + ").");
+  }
+  const std::string model_path = model.empty() || model[0] == '/' ? model : FolderOf(yaml_path) + "/" + model;
+  if (!std::ifstream(model_path).good()) {
+    throw std::runtime_error("OnnxMaterialSegmenter: the model file '" + model_path + "' named by '" + yaml_path +
+                             "' cannot be opened; check the 'model' key (relative paths start at the YAML's "
+                             "folder).");
+  }
+  auto network = std::make_shared<Network>();
+  try {
+    network->net = cv::dnn::readNetFromONNX(model_path);
+  } catch (const cv::Exception& error) {
+    throw std::runtime_error("OnnxMaterialSegmenter: OpenCV cannot read the ONNX model '" + model_path +
+                             "': " + error.msg);
+  }
+  if (network->net.empty()) {
+    throw std::runtime_error("OnnxMaterialSegmenter: the ONNX model '" + model_path + "' has no layers.");
+  }
+  network->net.setPreferableBackend(cv::dnn::DNN_BACKEND_OPENCV);
+  network->net.setPreferableTarget(cv::dnn::DNN_TARGET_CPU);
+  // One forward pass on a blank image tells the output's channel count.
+  cv::Mat output;
+  try {
+    output = Forward(&network->net, &network->mutex, pre, cv::Mat(pre.height, pre.width, CV_8UC3, cv::Scalar::all(128)));
+  } catch (const cv::Exception& error) {
+    throw std::runtime_error("OnnxMaterialSegmenter: the model '" + model_path + "' fails on a " +
+                             std::to_string(pre.width) + "x" + std::to_string(pre.height) +
+                             " input (check input.width/height): " + error.msg);
+  }
+  if (output.dims != 4 || output.size[0] != 1) {
+    throw std::invalid_argument("OnnxMaterialSegmenter: the model '" + model_path +
+                                "' must output a 1 x C x H x W tensor of per-label scores; its output has " +
+                                std::to_string(output.dims) + " dimensions.");
+  }
+  if (output.size[1] != static_cast<int>(labels.size())) {
+    throw std::invalid_argument("OnnxMaterialSegmenter: the label map in '" + yaml_path + "' has " +
+                                std::to_string(labels.size()) + " labels but the model '" + model_path +
+                                "' outputs " + std::to_string(output.size[1]) +
+                                " channels; list exactly one label per output channel, in channel order.");
+  }
+  return OnnxMaterialSegmenter(std::move(labels), pre, model_path, std::move(network));
+}
+
+cv::Mat OnnxMaterialSegmenter::SegmentNative(const cv::Mat& image) const {
+  if (image.empty() || image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
+    throw std::invalid_argument("OnnxMaterialSegmenter: needs an 8-bit image with 1 or 3 channels; got depth " +
+                                std::to_string(image.depth()) + " with " + std::to_string(image.channels()) +
+                                " channel(s).");
+  }
+  cv::Mat bgr;
+  if (image.channels() == 1) {
+    cv::cvtColor(image, bgr, cv::COLOR_GRAY2BGR);
+  } else {
+    bgr = image;
+  }
+  const cv::Mat output = Forward(&network_->net, &network_->mutex, preprocessing_, bgr);
+  const int n = output.size[1];
+  const int rows = output.size[2];
+  const int cols = output.size[3];
+  const float* scores = output.ptr<float>();
+  const std::size_t plane = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+  cv::Mat probabilities(rows, cols, CV_32FC(n));
+  for (int r = 0; r < rows; ++r) {
+    float* out = probabilities.ptr<float>(r);
+    for (int c = 0; c < cols; ++c) {
+      const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c);
+      float top = scores[at];
+      for (int k = 1; k < n; ++k) top = std::max(top, scores[static_cast<std::size_t>(k) * plane + at]);
+      float sum = 0.0f;
+      float* p = out + c * n;
+      for (int k = 0; k < n; ++k) {
+        p[k] = std::exp(scores[static_cast<std::size_t>(k) * plane + at] - top);
+        sum += p[k];
+      }
+      for (int k = 0; k < n; ++k) p[k] /= sum;
+    }
+  }
+  return probabilities;
+}
+
+cv::Mat OnnxMaterialSegmenter::DoSegment(const cv::Mat& image) const {
+  const cv::Mat native = SegmentNative(image);
+  cv::Mat resized;
+  cv::resize(native, resized, image.size(), 0.0, 0.0, cv::INTER_LINEAR);
+  return resized;
+}
+
+}  // namespace cairn::perception

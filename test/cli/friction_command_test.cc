@@ -1,0 +1,89 @@
+// Runs `cairn friction-dataset` and `cairn friction` as a user would.
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+struct CommandRun {
+  int exit_code;
+  std::string output;
+};
+
+CommandRun RunCairn(const std::string& arguments) {
+  const std::string command = std::string(CAIRN_CLI_PATH) + " " + arguments + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  CommandRun run{-1, ""};
+  if (pipe == nullptr) return run;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.output += buffer.data();
+  const int status = ::pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+class FrictionCommandTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cairn_friction_cli_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    const CommandRun dataset =
+        RunCairn("friction-dataset --out " + (dir_ / "data").string() + " --images 1 --width 96 --height 72");
+    ASSERT_EQ(dataset.exit_code, 0) << dataset.output;
+    image_ = (dir_ / "data" / "image_0000.png").string();
+    ASSERT_TRUE(fs::exists(image_)) << dataset.output;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+  std::string image_;
+};
+
+TEST_F(FrictionCommandTest, WritesLabelAndQuantileImagesAndStatistics) {
+  for (const std::string& segmenter :
+       {std::string("builtin"), std::string("onnx:") + CAIRN_SOURCE_DIR + "/data/models/tiny_material_net.yaml"}) {
+    const fs::path out = dir_ / "out";
+    const CommandRun run = RunCairn("friction --image " + image_ + " --segmenter " + segmenter + " --out " +
+                                    out.string() + " --eta 0.9 --json");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_THAT(run.output, HasSubstr("\"width\": 96, \"height\": 72"));
+    EXPECT_THAT(run.output, HasSubstr("\"eta\": 0.9"));
+    EXPECT_THAT(run.output, HasSubstr("\"label_fractions\": {\"asphalt\": "));
+    EXPECT_TRUE(fs::exists(out / "materials.png"));
+    EXPECT_TRUE(fs::exists(out / "friction.png"));
+    std::ifstream json(out / "friction.json");
+    std::stringstream text;
+    text << json.rdbuf();
+    EXPECT_EQ(text.str(), run.output);
+    fs::remove_all(out);
+  }
+}
+
+TEST_F(FrictionCommandTest, BadInputsExitWithOneAndSayWhy) {
+  const std::string out = (dir_ / "out").string();
+  CommandRun run = RunCairn("friction --image /nonexistent.png --out " + out);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.output, HasSubstr("Cannot read the image '/nonexistent.png'"));
+  run = RunCairn("friction --image " + image_ + " --eta 1.5 --out " + out);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.output, HasSubstr("must be in (0, 1); got 1.5"));
+  run = RunCairn("friction --image " + image_ + " --segmenter magic --out " + out);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.output, HasSubstr("Unknown segmenter 'magic'"));
+  run = RunCairn("friction --image " + image_);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.output, HasSubstr("--out is required"));
+}
+
+}  // namespace

@@ -1,0 +1,127 @@
+#include <cairn/multibody/model_builder.h>
+
+#include <limits>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "test_models.h"
+
+namespace cairn::multibody {
+namespace {
+
+using test::ExpectThrowWithMessage;
+
+Body MakeBody(const std::string& name, double mass = 1.0) {
+  Body body;
+  body.name = name;
+  body.inertia =
+      SpatialInertia::FromMassComInertia(mass, Eigen::Vector3d(0, 0, -0.5), 0.01 * Eigen::Matrix3d::Identity());
+  return body;
+}
+
+Joint Revolute(const std::string& name, const Eigen::Vector3d& axis = Eigen::Vector3d::UnitY()) {
+  Joint joint;
+  joint.name = name;
+  joint.type = JointType::kRevolute;
+  joint.axis = axis;
+  joint.lower_limit = -1.0;
+  joint.upper_limit = 1.0;
+  return joint;
+}
+
+TEST(ModelBuilderTest, BuildsADoublePendulumWithFramesAndLimits) {
+  ModelBuilder builder("pendulum");
+  const int upper = builder.AddBody(0, MakeBody("upper"), Revolute("shoulder"));
+  Joint elbow = Revolute("elbow", Eigen::Vector3d(0, 2, 0));
+  elbow.X_PJ = Pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, -1));
+  const int lower = builder.AddBody(upper, MakeBody("lower", 2.0), elbow);
+  builder.AddFrame("tip", lower, Pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, -1)));
+  const Model model = builder.Build();
+  EXPECT_EQ(model.nq(), 2);
+  EXPECT_EQ(model.nv(), 2);
+  EXPECT_EQ(model.num_bodies(), 3);
+  EXPECT_EQ(model.num_frames(), 4);
+  EXPECT_EQ(model.GetFrameIndex("tip"), 3);
+  EXPECT_EQ(model.frame(model.GetFrameIndex("lower")).body, lower);
+  EXPECT_DOUBLE_EQ(model.total_mass(), 3.0);
+  EXPECT_TRUE(model.joint(lower).axis.isApprox(Eigen::Vector3d::UnitY()));  // normalized
+  EXPECT_EQ(model.joint(lower).idx_q, 1);
+  EXPECT_EQ(model.velocity_joint(1), lower);
+  EXPECT_TRUE(model.IsAncestorOrSelf(upper, lower));
+  EXPECT_FALSE(model.IsAncestorOrSelf(lower, upper));
+  EXPECT_DOUBLE_EQ(model.lower_position_limits()[1], -1.0);
+  EXPECT_TRUE(std::isinf(model.velocity_limits()[0]));
+  EXPECT_EQ(model.joint_names(), (std::vector<std::string>{"shoulder", "elbow"}));
+  const Model no_gravity = model.WithGravity(Eigen::Vector3d::Zero());
+  EXPECT_TRUE(no_gravity.gravity().isZero());
+  EXPECT_DOUBLE_EQ(model.gravity().z(), -9.81);
+}
+
+TEST(ModelBuilderTest, UnknownNamesListTheClosestOnes) {
+  ModelBuilder builder("arm");
+  builder.AddBody(0, MakeBody("l_foot"), Revolute("l_ankle"));
+  builder.AddBody(1, MakeBody("r_foot"), Revolute("r_ankle"));
+  const Model model = builder.Build();
+  ExpectThrowWithMessage<std::invalid_argument>([&] { model.GetBodyIndex("l_fot"); },
+                                                {"unknown body 'l_fot'", "'l_foot'", "arm"});
+  ExpectThrowWithMessage<std::invalid_argument>([&] { model.GetJointIndex("r_ankel"); },
+                                                {"unknown joint 'r_ankel'", "'r_ankle'"});
+  ExpectThrowWithMessage<std::invalid_argument>([&] { model.GetFrameIndex("wrld"); }, {"'world'"});
+}
+
+TEST(ModelBuilderTest, RejectsBadBodiesAndJoints) {
+  ModelBuilder builder("bad");
+  builder.AddBody(0, MakeBody("a"), Revolute("ja"));
+  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, MakeBody("a"), Revolute("jb")); },
+                                                {"body name 'a'", "unique"});
+  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, MakeBody("b"), Revolute("ja")); },
+                                                {"joint name 'ja'", "unique"});
+  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(7, MakeBody("b"), Revolute("jb")); },
+                                                {"body index 7", "out of range"});
+  ExpectThrowWithMessage<std::invalid_argument>(
+      [&] { builder.AddBody(0, MakeBody("b"), Revolute("jb", Eigen::Vector3d::Zero())); },
+      {"joint 'jb'", "axis (0 0 0)", "zero"});
+  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, MakeBody("b", -2.0), Revolute("jb")); },
+                                                {"body 'b'", "mass -2"});
+  Body flat = MakeBody("b");
+  flat.inertia =
+      SpatialInertia::FromMassComInertia(1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 1.0, 0.0).asDiagonal());
+  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, flat, Revolute("jb")); },
+                                                {"body 'b'", "not positive definite"});
+  Joint crossed = Revolute("jb");
+  crossed.lower_limit = 2.0;
+  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, MakeBody("b"), crossed); },
+                                                {"joint 'jb'", "lower limit 2", "swap"});
+  Geometry sphere;
+  sphere.name = "ball";
+  sphere.type = GeometryType::kSphere;
+  sphere.radius = -1.0;
+  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddCollisionGeometry(1, sphere); },
+                                                {"body 'a'", "sphere 'ball'", "radius"});
+  builder.AddFrame("a", 1, Pose());
+  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.Build(); }, {"frame name 'a'", "body name"});
+}
+
+TEST(SpatialInertiaTest, TransformAndAddAgreeWithTheMatrixForm) {
+  const Eigen::Matrix3d I_c = (Eigen::Matrix3d() << 0.3, 0.01, 0.02, 0.01, 0.2, 0.03, 0.02, 0.03, 0.1).finished();
+  const SpatialInertia inertia = SpatialInertia::FromMassComInertia(2.5, Eigen::Vector3d(0.1, -0.2, 0.3), I_c);
+  const Pose X(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
+               Eigen::Vector3d(0.4, 0.5, -0.6));
+  // Matrix form of the force transform and of the motion transform's inverse.
+  Matrix6d force_transform, motion_inverse;
+  for (int k = 0; k < 6; ++k) {
+    force_transform.col(k) = X.ActForce(Vector6d::Unit(k));
+    motion_inverse.col(k) = X.InverseActMotion(Vector6d::Unit(k));
+  }
+  const Matrix6d expected = force_transform * inertia.Matrix() * motion_inverse;
+  EXPECT_TRUE(inertia.Transformed(X).Matrix().isApprox(expected, 1e-12));
+  SpatialInertia sum = inertia;
+  sum += inertia.Transformed(X);
+  EXPECT_TRUE(sum.Matrix().isApprox(inertia.Matrix() + expected, 1e-12));
+  EXPECT_TRUE(inertia.InertiaAboutCom().isApprox(I_c, 1e-12));
+  EXPECT_TRUE(inertia.com().isApprox(Eigen::Vector3d(0.1, -0.2, 0.3)));
+}
+
+}  // namespace
+}  // namespace cairn::multibody
