@@ -54,6 +54,8 @@ function(cairn_add_test name)
   target_compile_definitions(${name} PRIVATE
     CAIRN_SOURCE_DIR="${PROJECT_SOURCE_DIR}" CAIRN_SHARED_DIR="${CAIRN_SHARED_DIR}"
     CAIRN_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  # test/support holds helpers every suite may use (expect_throws.h, run_cairn.h).
+  target_include_directories(${name} PRIVATE "${PROJECT_SOURCE_DIR}/test/support")
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gmock GTest::gtest_main)
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 120 PROPERTIES TIMEOUT 600)
 endfunction()

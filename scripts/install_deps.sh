@@ -18,7 +18,7 @@ done
 CORE_PACKAGES=(
   build-essential cmake pkg-config git ninja-build ccache
   libeigen3-dev coinor-libipopt-dev libnlopt-cxx-dev libsuitesparse-dev libfcl-dev libccd-dev
-  liburdfdom-dev libopencv-dev libopencv-contrib-dev libbullet-dev libbullet-extras-dev
+  liburdfdom-dev libtinyxml-dev libopencv-dev libopencv-contrib-dev libbullet-dev libbullet-extras-dev
   pybind11-dev python3-dev python3-numpy libgtest-dev libgmock-dev libbenchmark-dev libyaml-cpp-dev
   libcli11-dev
 )

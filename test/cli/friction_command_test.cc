@@ -1,7 +1,5 @@
 // Runs `cairn friction-dataset` and `cairn friction` as a user would.
 
-#include <sys/wait.h>
-
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -12,34 +10,22 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "run_cairn.h"
+
 namespace {
+
+using cairn::test::CairnRun;
+using cairn::test::RunCairn;
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
-
-struct CommandRun {
-  int exit_code;
-  std::string output;
-};
-
-CommandRun RunCairn(const std::string& arguments) {
-  const std::string command = std::string(CAIRN_CLI_PATH) + " " + arguments + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  CommandRun run{-1, ""};
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.output += buffer.data();
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
 
 class FrictionCommandTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("cairn_friction_cli_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
-    const CommandRun dataset =
+    const CairnRun dataset =
         RunCairn("friction-dataset --out " + (dir_ / "data").string() + " --images 1 --width 96 --height 72");
     ASSERT_EQ(dataset.exit_code, 0) << dataset.output;
     image_ = (dir_ / "data" / "image_0000.png").string();
@@ -54,7 +40,7 @@ TEST_F(FrictionCommandTest, WritesLabelAndQuantileImagesAndStatistics) {
   for (const std::string& segmenter :
        {std::string("builtin"), std::string("onnx:") + CAIRN_SOURCE_DIR + "/data/models/tiny_material_net.yaml"}) {
     const fs::path out = dir_ / "out";
-    const CommandRun run = RunCairn("friction --image " + image_ + " --segmenter " + segmenter + " --out " +
+    const CairnRun run = RunCairn("friction --image " + image_ + " --segmenter " + segmenter + " --out " +
                                     out.string() + " --eta 0.9 --json");
     ASSERT_EQ(run.exit_code, 0) << run.output;
     EXPECT_THAT(run.output, HasSubstr("\"width\": 96, \"height\": 72"));
@@ -72,7 +58,7 @@ TEST_F(FrictionCommandTest, WritesLabelAndQuantileImagesAndStatistics) {
 
 TEST_F(FrictionCommandTest, BadInputsExitWithOneAndSayWhy) {
   const std::string out = (dir_ / "out").string();
-  CommandRun run = RunCairn("friction --image /nonexistent.png --out " + out);
+  CairnRun run = RunCairn("friction --image /nonexistent.png --out " + out);
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_THAT(run.output, HasSubstr("Cannot read the image '/nonexistent.png'"));
   run = RunCairn("friction --image " + image_ + " --eta 1.5 --out " + out);
