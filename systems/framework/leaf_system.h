@@ -180,41 +180,34 @@ class LeafSystem : public System {
     DependencyTicket ticket;
   };
 
+  // A handler is a member function of the subclass (bound to this system) or any callable.
+  template <typename... Args, typename Handler>
+  std::function<void(Args...)> BindHandler(Handler handler) const {
+    if constexpr (std::is_member_function_pointer_v<Handler>) {
+      return [this, handler](Args... args) { (static_cast<const OwnerOf<Handler>*>(this)->*handler)(args...); };
+    } else {
+      return std::function<void(Args...)>(std::move(handler));
+    }
+  }
   template <typename Handler>
   Event MakePublish(Handler handler) {
     Event event;
     event.kind = EventKind::kPublish;
-    if constexpr (std::is_member_function_pointer_v<Handler>) {
-      event.publish = [this, handler](const Context& c) { (static_cast<const OwnerOf<Handler>*>(this)->*handler)(c); };
-    } else {
-      event.publish = std::move(handler);
-    }
+    event.publish = BindHandler<const Context&>(std::move(handler));
     return event;
   }
   template <typename Handler>
   Event MakeDiscrete(Handler handler) {
     Event event;
     event.kind = EventKind::kDiscreteUpdate;
-    if constexpr (std::is_member_function_pointer_v<Handler>) {
-      event.discrete_update = [this, handler](const Context& c, DiscreteValues* next) {
-        (static_cast<const OwnerOf<Handler>*>(this)->*handler)(c, next);
-      };
-    } else {
-      event.discrete_update = std::move(handler);
-    }
+    event.discrete_update = BindHandler<const Context&, DiscreteValues*>(std::move(handler));
     return event;
   }
   template <typename Handler>
   Event MakeUnrestricted(Handler handler) {
     Event event;
     event.kind = EventKind::kUnrestrictedUpdate;
-    if constexpr (std::is_member_function_pointer_v<Handler>) {
-      event.unrestricted_update = [this, handler](const Context& c, State* next) {
-        (static_cast<const OwnerOf<Handler>*>(this)->*handler)(c, next);
-      };
-    } else {
-      event.unrestricted_update = std::move(handler);
-    }
+    event.unrestricted_update = BindHandler<const Context&, State*>(std::move(handler));
     return event;
   }
   template <typename MemberPointer>
