@@ -37,6 +37,9 @@ function(cairn_add_library name)
     # A sanitized library needs the sanitizer runtime first in every program that loads it, including outside
     # projects linking the installed package.
     target_link_options(cairn_${name} INTERFACE -fsanitize=address,undefined)
+    # Eigen allocates differently under AddressSanitizer, so code inlined from Cairn's headers into an outside
+    # project must be compiled the same way. (In-tree targets already use the global flags.)
+    target_compile_options(cairn_${name} INTERFACE $<INSTALL_INTERFACE:-fsanitize=address,undefined>)
   endif()
   install(TARGETS cairn_${name} EXPORT CairnTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -57,7 +60,11 @@ function(cairn_add_test name)
   # test/support holds helpers every suite may use (expect_throws.h, run_cairn.h).
   target_include_directories(${name} PRIVATE "${PROJECT_SOURCE_DIR}/test/support")
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gmock GTest::gtest_main)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 120 PROPERTIES TIMEOUT 600)
+  set(properties TIMEOUT 600)
+  if(CAIRN_SANITIZE)
+    list(APPEND properties ENVIRONMENT "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/test/support/lsan.supp")
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 120 PROPERTIES ${properties})
 endfunction()
 
 # cairn_add_benchmark(<name> SOURCES ... [LIBS ...])
