@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,7 @@
 #include "cairn/perception/friction/builtin_material_segmenter.h"
 #include "cairn/perception/friction/material_scene.h"
 #include "cairn/perception/friction/material_segmentation_score.h"
+#include "cairn/perception/friction/stereo_material_scene.h"
 #include "command_registry.h"
 
 namespace cairn::cli {
@@ -26,6 +28,7 @@ struct FrictionTrainState {
   double noise{2.0};
   int epochs{40};
   int hidden{48};
+  std::string source{"material"};
   bool json{false};
 };
 
@@ -41,20 +44,43 @@ int RunFrictionTrain(const FrictionTrainState& s) {
   if (s.test_images < 1) {
     throw std::invalid_argument("--test-images must be >= 1; got " + std::to_string(s.test_images) + ".");
   }
-  MaterialScene::Options scene_options;
-  scene_options.width = s.width;
-  scene_options.height = s.height;
-  scene_options.noise_stddev = s.noise;
-  const MaterialScene scene(scene_options);
-  const std::vector<std::string>& labels = scene.options().labels;
+  // Scene i of the chosen family as (colour image, label-index image).
+  std::vector<std::string> labels;
+  std::function<std::pair<cv::Mat, cv::Mat>(unsigned)> render;
+  if (s.source == "material") {
+    MaterialScene::Options scene_options;
+    scene_options.width = s.width;
+    scene_options.height = s.height;
+    scene_options.noise_stddev = s.noise;
+    auto scene = std::make_shared<const MaterialScene>(scene_options);
+    labels = scene->options().labels;
+    render = [scene](unsigned seed) {
+      MaterialScene::Rendering r = scene->Render(seed);
+      return std::make_pair(r.image, r.labels);
+    };
+  } else if (s.source == "stereo") {
+    StereoMaterialScene::Options scene_options;
+    scene_options.width = s.width;
+    scene_options.height = s.height;
+    scene_options.noise_variance = s.noise * s.noise;
+    auto scene = std::make_shared<const StereoMaterialScene>(scene_options);
+    labels = scene->options().labels;
+    render = [scene](unsigned seed) {
+      StereoMaterialScene::Rendering r = scene->Render(seed);
+      return std::make_pair(r.image, r.labels);
+    };
+  } else {
+    throw std::invalid_argument("--source must be 'material' (MaterialScene renders) or 'stereo' (the synthetic "
+                                "stereo source's renders); got '" + s.source + "'.");
+  }
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<cv::Mat> images;
   std::vector<cv::Mat> label_images;
   for (int i = 0; i < s.images; ++i) {
-    MaterialScene::Rendering r = scene.Render(s.seed + static_cast<unsigned>(i));
-    images.push_back(r.image);
-    label_images.push_back(r.labels);
+    auto [image, label_image] = render(s.seed + static_cast<unsigned>(i));
+    images.push_back(image);
+    label_images.push_back(label_image);
   }
   BuiltinMaterialSegmenter::TrainingOptions options;
   options.epochs = s.epochs;
@@ -69,11 +95,11 @@ int RunFrictionTrain(const FrictionTrainState& s) {
   MaterialSegmentationScore score(static_cast<int>(labels.size()));
   double segment_ms = 0.0;
   for (int i = 0; i < s.test_images; ++i) {
-    const MaterialScene::Rendering r = scene.Render(s.seed + kTestSeedOffset + static_cast<unsigned>(i));
+    const auto [image, label_image] = render(s.seed + kTestSeedOffset + static_cast<unsigned>(i));
     const auto t0 = std::chrono::steady_clock::now();
-    const cv::Mat probabilities = segmenter.Segment(r.image);
+    const cv::Mat probabilities = segmenter.Segment(image);
     segment_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    score.Add(probabilities, r.labels);
+    score.Add(probabilities, label_image);
   }
   segment_ms /= s.test_images;
 
@@ -86,13 +112,15 @@ int RunFrictionTrain(const FrictionTrainState& s) {
     }
   }
   if (s.json) {
-    std::printf("{\"model\": \"%s\", \"train_images\": %d, \"test_images\": %d, \"width\": %d, \"height\": %d, "
-                "\"train_seconds\": %.2f, \"training_samples\": %d, \"calibration_samples\": %d, "
+    std::printf("{\"model\": \"%s\", \"source\": \"%s\", \"train_images\": %d, \"test_images\": %d, "
+                "\"width\": %d, \"height\": %d, \"train_seconds\": %.2f, \"training_samples\": %d, "
+                "\"calibration_samples\": %d, "
                 "\"temperature\": %.4f, \"calibration_ece_before\": %.4f, \"calibration_ece_after\": %.4f, "
                 "\"test_pixel_accuracy\": %.4f, \"test_class_average_accuracy\": %.4f, \"test_ece\": %.4f, "
                 "\"test_nll\": %.4f, \"segment_ms_per_image\": %.2f, \"per_label_accuracy\": {",
-                s.out.c_str(), s.images, s.test_images, s.width, s.height, train_s, report.num_training_samples,
-                report.num_calibration_samples, report.temperature, report.ece_before, report.ece_after,
+                s.out.c_str(), s.source.c_str(), s.images, s.test_images, s.width, s.height, train_s,
+                report.num_training_samples, report.num_calibration_samples, report.temperature, report.ece_before,
+                report.ece_after,
                 score.pixel_accuracy(), score.class_average_accuracy(), score.expected_calibration_error(),
                 score.mean_negative_log_likelihood(), segment_ms);
     bool first = true;
@@ -103,8 +131,9 @@ int RunFrictionTrain(const FrictionTrainState& s) {
     }
     std::printf("}}\n");
   } else {
-    std::printf("trained on %d renders (%dx%d) in %.1f s: %d patches, %d calibration patches\n", s.images, s.width,
-                s.height, train_s, report.num_training_samples, report.num_calibration_samples);
+    std::printf("trained on %d %s renders (%dx%d) in %.1f s: %d patches, %d calibration patches\n", s.images,
+                s.source.c_str(), s.width, s.height, train_s, report.num_training_samples,
+                report.num_calibration_samples);
     std::printf("calibration: temperature %.3f, ECE %.3f -> %.3f, NLL %.3f -> %.3f\n", report.temperature,
                 report.ece_before, report.ece_after, report.nll_before, report.nll_after);
     std::printf("held-out %d renders: pixel accuracy %.3f, class-average accuracy %.3f, ECE %.3f "
@@ -138,6 +167,10 @@ void RegisterFrictionTrainCommand(CommandRegistry* registry) {
                       ->capture_default_str();
                   app.add_option("--epochs", s->epochs, "Training passes")->capture_default_str();
                   app.add_option("--hidden", s->hidden, "Hidden units")->capture_default_str();
+                  app.add_option("--source", s->source,
+                                 "Scene renderer: 'material' (MaterialScene) or 'stereo' (the synthetic stereo "
+                                 "source, StereoMaterialScene); --noise is the standard deviation for both")
+                      ->capture_default_str();
                   app.add_flag("--json", s->json, "Print one JSON object");
                   return [s] { return RunFrictionTrain(*s); };
                 });

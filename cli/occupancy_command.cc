@@ -10,6 +10,7 @@
 
 #include "cairn/perception/occupancy/bars_scenario.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
+#include "cairn/perception/occupancy/occupancy_scenario.h"
 #include "cairn/perception/occupancy/occupancy_score.h"
 #include "cairn/perception/occupancy/wta_range_sensor_model.h"
 #include "cairn/perception/stereo/compute_confidence.h"
@@ -25,8 +26,10 @@ struct OccupancyState {
   std::string scenario{"bars"};
   std::string model{"merrell"};
   double noise_variance{0.0};
+  bool noise_given{false};
   double peak_ratio{1.5};
   int frames{20};
+  bool frames_given{false};
   std::string cost{"btsad"};
   int window{9};
   std::string ply;
@@ -35,11 +38,6 @@ struct OccupancyState {
 
 int RunOccupancy(const OccupancyState& s) {
   using namespace cairn::perception;
-  if (s.scenario != "bars") {
-    throw std::invalid_argument("--scenario '" + s.scenario +
-                                "' is not available: only the built-in 'bars' scenario exists in this version "
-                                "(YAML scenarios are not implemented yet); use --scenario bars");
-  }
   const bool wta_model = s.model == "wta";
   if (!wta_model && s.model != "merrell" && s.model != "matthies" && s.model != "exp" && s.model != "hsm") {
     throw std::invalid_argument("unknown occupancy model '" + s.model +
@@ -47,8 +45,28 @@ int RunOccupancy(const OccupancyState& s) {
   }
   const ConfidenceModelType type = wta_model ? ConfidenceModelType::kMerrell : ParseConfidenceModelType(s.model);
   const CostFunction cost = ParseCostFunction(s.cost);
-  const BarsScenario scenario = BarsScenario::Make(s.frames);
-  const SyntheticStereoRenderer renderer(scenario.calibration, scenario.width, scenario.height, s.noise_variance, 1);
+  OccupancyScenario scenario;
+  if (s.scenario == "bars") {
+    scenario = BarsScenario::Make(s.frames).ToOccupancyScenario();
+  } else {
+    scenario = OccupancyScenario::FromYaml(s.scenario);
+    if (s.frames_given) {
+      if (s.frames < 1 || s.frames > static_cast<int>(scenario.trajectory.size())) {
+        throw std::invalid_argument("--frames " + std::to_string(s.frames) + ": scenario '" + s.scenario + "' has " +
+                                    std::to_string(scenario.trajectory.size()) + " frames; ask for 1 to that many");
+      }
+      scenario.trajectory.resize(static_cast<std::size_t>(s.frames));
+    }
+  }
+  if (s.noise_given) {
+    if (!(s.noise_variance >= 0.0)) {
+      throw std::invalid_argument("--noise-var " + std::to_string(s.noise_variance) +
+                                  " is negative; use 0 for noise-free images");
+    }
+    scenario.noise_variance = s.noise_variance;
+  }
+  const SyntheticStereoRenderer renderer(scenario.calibration, scenario.width, scenario.height,
+                                         scenario.noise_variance, scenario.seed);
   CostVolumeOptions options;
   options.cost = cost;
   options.window = s.window;
@@ -65,7 +83,8 @@ int RunOccupancy(const OccupancyState& s) {
   WtaResult wta;
   double total_ms = 0.0;
   OccupancyScore score;
-  if (s.json) std::printf("{\"model\": \"%s\", \"noise_var\": %g, \"frames\": [", s.model.c_str(), s.noise_variance);
+  if (s.json) std::printf("{\"scenario\": \"%s\", \"model\": \"%s\", \"noise_var\": %g, \"frames\": [", s.scenario.c_str(),
+                s.model.c_str(), scenario.noise_variance);
   for (std::size_t f = 0; f < scenario.trajectory.size(); ++f) {
     const auto frame = renderer.Render(scenario.scene, scenario.trajectory[f], static_cast<int>(f));
     const auto start = std::chrono::steady_clock::now();
@@ -109,19 +128,27 @@ void RegisterOccupancyCommand(CommandRegistry* registry) {
   registry->Add("occupancy", "Fuse a synthetic stereo sequence into an occupancy grid and score it",
                 [](CLI::App& app) -> CommandAction {
                   auto s = std::make_shared<OccupancyState>();
-                  app.add_option("--scenario", s->scenario, "Scenario: bars (thesis Figs. 4.7/4.8)")
+                  app.add_option("--scenario", s->scenario,
+                                 "bars (thesis Figs. 4.7/4.8) or a YAML file (docs/occupancy_scenarios.md)")
                       ->capture_default_str();
                   app.add_option("--model", s->model, "merrell, matthies, exp, hsm (cost-curve, ML) or wta")
                       ->capture_default_str();
-                  app.add_option("--noise-var", s->noise_variance, "Gaussian image noise variance (0..255 scale)")
+                  CLI::Option* noise = app.add_option("--noise-var", s->noise_variance,
+                                 "Gaussian image noise variance (0..255 scale); overrides the scenario's")
                       ->capture_default_str();
                   app.add_option("--peak-ratio", s->peak_ratio, "WTA model: minimum peak ratio")->capture_default_str();
-                  app.add_option("--frames", s->frames, "Number of frames")->capture_default_str();
+                  CLI::Option* frames =
+                      app.add_option("--frames", s->frames, "Number of frames (YAML: the first N of the file's)")
+                      ->capture_default_str();
                   app.add_option("--cost", s->cost, "ssd or btsad")->capture_default_str();
                   app.add_option("--window", s->window, "Odd window side")->capture_default_str();
                   app.add_option("--ply", s->ply, "Write the final occupied cells to this PLY file");
                   app.add_flag("--json", s->json, "Print one JSON object");
-                  return [s] { return RunOccupancy(*s); };
+                  return [s, noise, frames] {
+                    s->noise_given = noise->count() > 0;
+                    s->frames_given = frames->count() > 0;
+                    return RunOccupancy(*s);
+                  };
                 });
 }
 

@@ -13,9 +13,12 @@ namespace cairn::perception {
 /// labels' CDFs are tabulated once, so a pixel costs a short search over a table instead of many CDF evaluations.
 ///
 /// Methods, as FrictionQuantile():
-/// - kExact: label CDFs tabulated on a 1/2048 grid over [0, max_i q_i] (the mixture quantile never exceeds the
-///   largest component quantile), binary search for the bracketing cell, linear interpolation inside it.
-///   cdf_interpolation_error() reports the table's largest CDF error (measured at every cell's midpoint).
+/// - kExact: label CDFs tabulated on a 1/2048 grid over [0, max_i q_i], where q_i is label i's own (1−η)
+///   quantile: the mixture quantile never exceeds it, since F(max_i q_i) = Σ_i p_i F_i(max_i q_i) >= Σ_i p_i (1−η).
+///   The root of the piecewise-linear tabulated CDF is found by Newton steps on the table's cells, safeguarded
+///   by bisection, from the probability-weighted mean of the q_i, and is exact inside its cell (linear
+///   interpolation); confident pixels need two or three cell evaluations. cdf_interpolation_error() reports the table's largest
+///   CDF error (measured at every cell's midpoint).
 /// - kSearch: the thesis' Algorithm 1 with step `tolerance`, on CDFs tabulated at its grid points (exact values).
 /// - kGaussian: the moment approximation.
 /// Rows are split across threads; results do not depend on the thread count.
@@ -45,18 +48,33 @@ class FrictionQuantileImage {
   double cdf_interpolation_error() const { return cdf_interpolation_error_; }
 
  private:
-  // `p` is padded to stride_ entries (zeros past num_labels_).
-  float QuantileOfPixel(const float* p) const;
-  float CdfAt(int point, const float* p) const;
+  // 16 floats on a cache line: a table row of up to 16 labels is one line.
+  struct alignas(64) Block {
+    float values[16]{};
+  };
+  // Per-thread state of ExactQuantilesOfRow(), one entry per pixel still searching.
+  struct Workspace {
+    std::vector<int> active, low, high, cell;
+  };
+
+  // `padded` holds `cols` pixels of stride_ floats (zeros past num_labels_); `out` receives `cols` quantiles.
+  void ExactQuantilesOfRow(const float* padded, int cols, Workspace* workspace, float* out) const;
+  void SearchQuantilesOfRow(const float* padded, int cols, float* out) const;
+  void GaussianQuantilesOfRow(const float* padded, int cols, float* out) const;
+  float* TableRow(int point) { return table_[static_cast<std::size_t>(point) * blocks_].values; }
+  const float* TableRow(int point) const { return table_[static_cast<std::size_t>(point) * blocks_].values; }
 
   Options options_;
   int num_labels_;
   float target_;            // 1 − η
+  int blocks_;              // 16-label blocks per pixel
+  int stride_;              // 16 * blocks_
   double step_;             // table spacing in μ
   int num_points_;          // table entries per label
-  int stride_;              // labels padded to a multiple of 8 so the per-point dot product vectorises
-  std::vector<float> table_;  // [point * stride + label] = F(point * step | label), zero padding
-  std::vector<float> mean_, second_moment_;  // kGaussian
+  std::vector<Block> table_;  // point j's row: blocks [j * blocks_, (j + 1) * blocks_), F(j * step | label)
+  std::vector<float> label_cell_;  // kExact: each label's own quantile in table cells, padded to stride_
+  std::vector<float> ones_;  // stride_ ones: pixel sums as dot products
+  std::vector<float> mean_, second_moment_;  // kGaussian, padded to stride_
   float z_;                 // Φ⁻¹(1 − η), kGaussian
   double cdf_interpolation_error_{0.0};
 };

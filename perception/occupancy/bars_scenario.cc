@@ -11,7 +11,7 @@ BarsScenario BarsScenario::Make(int frames) {
     throw std::invalid_argument("BarsScenario: " + std::to_string(frames) + " frames; ask for at least 1 (the thesis uses 20)");
   }
   BarsScenario s;
-  s.calibration = StereoCalibration{300.0, 300.0, 159.5, 119.5, 0.3};
+  s.calibration = StereoCalibration{600.0, 600.0, 319.5, 239.5, 0.3};
   const Eigen::Vector3d center(0.0, 3.0, 0.0);
   ProceduralTexture bar_texture;
   bar_texture.kind = ProceduralTexture::Kind::kNoise;
@@ -28,10 +28,10 @@ BarsScenario BarsScenario::Make(int frames) {
     s.bars.back().AddBox(X_WB, half, bar_texture, 1);
   }
   // The wall must be matchable between the bars, or nothing can clear the space behind them: its disparity
-  // jump from the bars (30 - fb / depth px) is the width of the band beside each bar that the right camera cannot
-  // see, and the gaps between bars are 22 px wide. A wall 10 m away (jump 21 px) is hidden from one camera almost
-  // everywhere, so every background pixel matches a bar-like disparity and paints false surfaces 10-30 cm behind
-  // the bars; at 1 m behind the bars (jump 7.5 px) two thirds of each gap is seen by both cameras. The texture
+  // jump from the bars (60 - fb / depth px) is the width of the band beside each bar that the right camera cannot
+  // see, and the gaps between bars are 44 px wide. A wall 10 m away (jump 42 px) is hidden from one camera almost
+  // everywhere, so every background pixel matches a bar-like disparity and paints false surfaces behind the bars;
+  // at 1 m behind the bars (jump 15 px) two thirds of each gap is seen by both cameras. The texture
   // is as fine and contrasted as the bars' so that the wall is matched as reliably as they are.
   ProceduralTexture wall;
   wall.kind = ProceduralTexture::Kind::kNoise;
@@ -54,6 +54,21 @@ BarsScenario BarsScenario::Make(int frames) {
     X_WC.translation() = position;
     s.trajectory.push_back(X_WC);
   }
+  return s;
+}
+
+OccupancyScenario BarsScenario::ToOccupancyScenario() const {
+  OccupancyScenario s;
+  s.scene = scene;
+  s.calibration = calibration;
+  s.width = width;
+  s.height = height;
+  s.min_disparity = min_disparity;
+  s.max_disparity = max_disparity;
+  s.trajectory = trajectory;
+  s.grid_min_corner = grid_min_corner;
+  s.grid_resolution = grid_resolution;
+  s.grid_dims = grid_dims;
   return s;
 }
 

@@ -1,5 +1,6 @@
 #include "cairn/perception/occupancy/wta_range_sensor_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,7 @@ void WtaRangeSensorModel::Integrate(const WtaResult& wta, int min_disparity, int
   }
   const int num_disp = max_disparity - min_disparity + 1;
   const double inverse_two_var = 1.0 / (2.0 * options_.sigma_disparity * options_.sigma_disparity);
+  const double band = 8.0 * options_.sigma_disparity;
   internal::IntegrateRays(
       wta.disparity.rows, wta.disparity.cols, min_disparity, num_disp, calibration, X_WC,
       {options_.min_probability, options_.max_probability, options_.min_visibility, options_.num_threads},
@@ -46,8 +48,14 @@ void WtaRangeSensorModel::Integrate(const WtaResult& wta, int min_disparity, int
         if (!std::isfinite(d)) return false;
         if (wta.peak_ratio.at<float>(y, x) < options_.min_peak_ratio) return false;
         if (options_.require_lr_consistency && wta.lr_consistent.at<uint8_t>(y, x) == 0) return false;
-        for (int k = 0; k < num_disp; ++k) {
-          const double r = min_disparity + k - d;
+        // Beyond 8 sigma the Gaussian is below 1e-14 of its peak, under float resolution of the ray's unit
+        // total: those samples are exactly 0 in effect, so only the band around d is evaluated.
+        const double centre = d - min_disparity;
+        const int k_begin = std::max(0, static_cast<int>(std::floor(centre - band)));
+        const int k_end = std::min(num_disp, static_cast<int>(std::ceil(centre + band)) + 1);
+        std::fill(c, c + num_disp, 0.0f);
+        for (int k = k_begin; k < k_end; ++k) {
+          const double r = k - centre;
           c[k] = static_cast<float>(std::exp(-r * r * inverse_two_var));
         }
         return true;

@@ -24,13 +24,19 @@ struct SyntheticStereoFrame {
   cv::Mat depth;
   /// Ground-truth material label of the left view, CV_32SC1; -1 where the ray hits nothing.
   cv::Mat labels;
+  /// Left and right colour images, CV_8UC3 (BGR), rendered only for scenes with colour textures
+  /// (SyntheticStereoScene::has_colour_textures()), else empty. `left` and `right` are then their luma
+  /// (0.299 R + 0.587 G + 0.114 B, before noise).
+  cv::Mat left_colour;
+  cv::Mat right_colour;
   /// Pose of the left camera in the world.
   Eigen::Isometry3d X_WC{Eigen::Isometry3d::Identity()};
 };
 
 /// Renders rectified pairs of a SyntheticStereoScene by casting rays through every pixel (2 x 2 supersampling for
 /// the intensities, the pixel centre for depth and labels), with optional Gaussian image noise. The result of
-/// Render() depends only on the scene, the pose, the frame index and the constructor's arguments.
+/// Render() depends only on the scene, the pose, the frame index and the constructor's arguments. Scenes with
+/// colour textures are also rendered in colour (the colour images' noise is drawn independently per channel).
 class SyntheticStereoRenderer {
  public:
   /// `noise_variance` is the variance of the zero-mean Gaussian noise added to each image's intensities (0..255

@@ -4,6 +4,9 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "cairn/common/cairn_assert.h"
 
 namespace cairn::perception {
 
@@ -20,7 +23,7 @@ int SyntheticStereoScene::AddPlane(const Eigen::Vector3d& point, const Eigen::Ve
   frame.linear().col(1) = z.cross(x);
   frame.linear().col(2) = z;
   frame.translation() = point;
-  objects_.push_back(Object{false, frame, Eigen::Vector3d::Zero(), texture, label});
+  objects_.push_back(Object{false, frame, frame.inverse(), Eigen::Vector3d::Zero(), texture, label});
   return num_objects() - 1;
 }
 
@@ -32,7 +35,7 @@ int SyntheticStereoScene::AddBox(const Eigen::Isometry3d& X_WB, const Eigen::Vec
                                   std::to_string(half_extents[i]) + "; every half extent must be positive");
     }
   }
-  objects_.push_back(Object{true, X_WB, half_extents, texture, label});
+  objects_.push_back(Object{true, X_WB, X_WB.inverse(), half_extents, texture, label});
   return num_objects() - 1;
 }
 
@@ -40,9 +43,11 @@ std::optional<SyntheticStereoScene::Hit> SyntheticStereoScene::Intersect(const E
                                                                         const Eigen::Vector3d& direction) const {
   constexpr double kEps = 1e-9;
   std::optional<Hit> best;
+  double best_u = 0.0;
+  double best_v = 0.0;
   for (int i = 0; i < num_objects(); ++i) {
     const Object& object = objects_[i];
-    const Eigen::Vector3d o = object.X_WB.inverse() * origin;
+    const Eigen::Vector3d o = object.X_BW * origin;
     const Eigen::Vector3d d = object.X_WB.linear().transpose() * direction;
     double t = std::numeric_limits<double>::infinity();
     double u = 0.0;
@@ -80,14 +85,20 @@ std::optional<SyntheticStereoScene::Hit> SyntheticStereoScene::Intersect(const E
       u = p[(axis + 1) % 3];
       v = p[(axis + 2) % 3];
     }
-    if (!best || t < best->t) best = Hit{t, i, object.label, object.texture.Evaluate(u, v)};
+    if (!best || t < best->t) {
+      best = Hit{t, i, object.label, 0.0};
+      best_u = u;
+      best_v = v;
+    }
   }
+  // The texture is evaluated once, for the nearest surface only.
+  if (best) best->intensity = objects_[best->object].texture.Evaluate(best_u, best_v);
   return best;
 }
 
 bool SyntheticStereoScene::Occupies(const Eigen::Vector3d& p_W, double tolerance) const {
   for (const Object& object : objects_) {
-    const Eigen::Vector3d p = object.X_WB.inverse() * p_W;
+    const Eigen::Vector3d p = object.X_BW * p_W;
     if (object.is_box) {
       if ((p.cwiseAbs() - object.half_extents).maxCoeff() <= tolerance) return true;
     } else if (std::abs(p.z()) <= tolerance) {
@@ -129,6 +140,47 @@ bool SyntheticStereoScene::OccupiesCube(const Eigen::Vector3d& center, double si
     if (!apart) return true;
   }
   return false;
+}
+
+void SyntheticStereoScene::SetColourTexture(int object, ColourTexture texture) {
+  if (object < 0 || object >= num_objects()) {
+    throw std::invalid_argument("SyntheticStereoScene::SetColourTexture: object " + std::to_string(object) +
+                                " does not exist; the scene has " + std::to_string(num_objects()) +
+                                " objects (use the index AddPlane/AddBox returned)");
+  }
+  if (!texture) {
+    throw std::invalid_argument("SyntheticStereoScene::SetColourTexture: the texture of object " +
+                                std::to_string(object) + " is an empty function");
+  }
+  if (colour_textures_.size() < objects_.size()) colour_textures_.resize(objects_.size());
+  if (!colour_textures_[object]) ++num_colour_textures_;
+  colour_textures_[object] = std::move(texture);
+}
+
+Eigen::Vector3d SyntheticStereoScene::ColourOf(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                                               const Hit& hit) const {
+  CAIRN_CHECK(hit.object >= 0 && hit.object < num_objects());
+  const bool coloured = hit.object < static_cast<int>(colour_textures_.size()) && colour_textures_[hit.object];
+  if (!coloured) return Eigen::Vector3d::Constant(hit.intensity);
+  // The texture coordinates Intersect() used, recomputed by the same operations (so bit for bit): a plane's
+  // in-plane axes; for a box, the two axes of the face the ray enters through, the slab with the latest entry.
+  const Object& object = objects_[hit.object];
+  const Eigen::Vector3d o = object.X_BW * origin;
+  const Eigen::Vector3d d = object.X_WB.linear().transpose() * direction;
+  const Eigen::Vector3d p = o + hit.t * d;
+  if (!object.is_box) return colour_textures_[hit.object](p.x(), p.y());
+  double t_near = -std::numeric_limits<double>::infinity();
+  int axis = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (std::abs(d[a]) < 1e-9) continue;
+    const double h = object.half_extents[a];
+    const double t0 = std::min((-h - o[a]) / d[a], (h - o[a]) / d[a]);
+    if (t0 > t_near) {
+      t_near = t0;
+      axis = a;
+    }
+  }
+  return colour_textures_[hit.object](p[(axis + 1) % 3], p[(axis + 2) % 3]);
 }
 
 }  // namespace cairn::perception

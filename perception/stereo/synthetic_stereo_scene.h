@@ -3,6 +3,7 @@
 /// @file
 /// A scene of textured planes and boxes for the synthetic stereo renderer.
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -40,6 +41,20 @@ class SyntheticStereoScene {
   int AddBox(const Eigen::Isometry3d& X_WB, const Eigen::Vector3d& half_extents, const ProceduralTexture& texture,
              int label);
 
+  /// A colour pattern (BGR, each in [0, 255]) over an object's texture coordinates (metres), e.g. a
+  /// perception::MaterialTexture's Evaluate().
+  using ColourTexture = std::function<Eigen::Vector3d(double u, double v)>;
+
+  /// Gives object `object` a colour texture (optional: objects without one are grey, their ProceduralTexture's
+  /// intensity on all channels). SyntheticStereoRenderer renders colour images when any object has one.
+  /// Throws std::invalid_argument for an object index out of range or an empty function.
+  void SetColourTexture(int object, ColourTexture texture);
+  /// Whether any object has a colour texture.
+  bool has_colour_textures() const { return num_colour_textures_ > 0; }
+  /// Colour (BGR) of `hit`, the result of Intersect(origin, direction): the object's colour texture at the hit's
+  /// texture coordinates, or its intensity on all channels when it has none.
+  Eigen::Vector3d ColourOf(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, const Hit& hit) const;
+
   /// The nearest surface hit by the ray origin + t direction, t > 0, or nothing.
   std::optional<Hit> Intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) const;
 
@@ -57,11 +72,15 @@ class SyntheticStereoScene {
   struct Object {
     bool is_box;
     Eigen::Isometry3d X_WB;        // box pose, or plane frame (z = normal) at its anchor
+    Eigen::Isometry3d X_BW;        // its inverse, kept because Intersect() runs per pixel and object
     Eigen::Vector3d half_extents;  // boxes only
     ProceduralTexture texture;
     int label;
   };
   std::vector<Object> objects_;
+  // Per object, possibly empty; sized lazily by SetColourTexture() so grey scenes carry nothing.
+  std::vector<ColourTexture> colour_textures_;
+  int num_colour_textures_{0};
 };
 
 }  // namespace cairn::perception

@@ -47,6 +47,8 @@ SyntheticStereoSource::SyntheticStereoSource(SyntheticStereoScene scene, Synthet
         v->get_mutable_value<Eigen::Isometry3d>() = trajectory_[FrameIndexAt(c.get_time())];
       },
       {time_ticket()});
+  image_output("left_colour", &SyntheticStereoFrame::left_colour);
+  image_output("right_colour", &SyntheticStereoFrame::right_colour);
 }
 
 int SyntheticStereoSource::FrameIndexAt(double t) const {

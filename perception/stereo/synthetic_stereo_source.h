@@ -24,6 +24,8 @@ namespace cairn::perception {
 /// | output `depth` | cv::Mat (CV_32F) | ground-truth depth of the left image (metres, +inf for sky) |
 /// | output `labels` | cv::Mat | ground-truth material labels of the left image |
 /// | output `X_WC` | Eigen::Isometry3d | left camera pose in the world |
+/// | output `left_colour` | cv::Mat (CV_8UC3) | left colour image (BGR); empty unless the scene has colour textures |
+/// | output `right_colour` | cv::Mat (CV_8UC3) | right colour image (BGR); empty likewise |
 ///
 /// No state: the frame is a cached function of time, rendered once per frame and shared by the outputs.
 class SyntheticStereoSource final : public systems::LeafSystem {
@@ -43,6 +45,8 @@ class SyntheticStereoSource final : public systems::LeafSystem {
   const systems::OutputPort& get_depth_output_port() const { return get_output_port(2); }
   const systems::OutputPort& get_labels_output_port() const { return get_output_port(3); }
   const systems::OutputPort& get_pose_output_port() const { return get_output_port(4); }
+  const systems::OutputPort& get_left_colour_output_port() const { return get_output_port(5); }
+  const systems::OutputPort& get_right_colour_output_port() const { return get_output_port(6); }
 
  private:
   SyntheticStereoScene scene_;

@@ -1,7 +1,10 @@
 // Runs `cairn stereo-eval` and `cairn occupancy` as a user would and checks exit codes and key output.
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -73,7 +76,7 @@ TEST(PerceptionCommandsTest, OccupancyPrintsPrecisionAndRecallPerFrame) {
   EXPECT_THAT(text.output, HasSubstr("ms per frame"));
   const CairnRun json = RunCairn("occupancy --scenario bars --model wta --noise-var 13 --frames 1 --json");
   ASSERT_EQ(json.exit_code, 0) << json.output;
-  for (const char* key : {"\"model\": \"wta\"", "\"noise_var\": 13", "\"frame\": 0", "\"precision\": ",
+  for (const char* key : {"\"scenario\": \"bars\"", "\"model\": \"wta\"", "\"noise_var\": 13", "\"frame\": 0", "\"precision\": ",
                           "\"recall\": ", "\"ms_per_frame\": "}) {
     EXPECT_THAT(json.output, HasSubstr(key));
   }
@@ -85,13 +88,49 @@ TEST(PerceptionCommandsTest, OccupancyBadInputExitsWithOneOrTwo) {
   EXPECT_THAT(model.output, HasSubstr("unknown occupancy model 'gaussian'"));
   const CairnRun scenario = RunCairn("occupancy --scenario /no/such.yaml --frames 1");
   EXPECT_EQ(scenario.exit_code, 1);
-  EXPECT_THAT(scenario.output, HasSubstr("/no/such.yaml"));
+  EXPECT_THAT(scenario.output, HasSubstr("'/no/such.yaml' cannot be read"));
   const CairnRun frames = RunCairn("occupancy --frames 0");
   EXPECT_EQ(frames.exit_code, 1);
   EXPECT_THAT(frames.output, HasSubstr("0 frames"));
   const CairnRun flag = RunCairn("occupancy --bogus");
   EXPECT_EQ(flag.exit_code, 2);
   EXPECT_THAT(flag.output, HasSubstr("--bogus"));
+}
+
+std::string BoxesOnFloor() { return std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/occupancy/boxes_on_floor.yaml"; }
+
+TEST(PerceptionCommandsTest, OccupancyRunsAYamlScenario) {
+  const CairnRun run = RunCairn("occupancy --scenario " + BoxesOnFloor() + " --model merrell --frames 2 --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("boxes_on_floor.yaml"));
+  EXPECT_THAT(run.output, HasSubstr("\"noise_var\": 13"));  // the file's noise
+  EXPECT_THAT(run.output, HasSubstr("\"frame\": 1"));
+  EXPECT_THAT(run.output, Not(HasSubstr("\"frame\": 2")));
+  // The boxes are seen: some occupied cells are right after two frames.
+  const auto at = run.output.rfind("\"precision\": ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_GT(std::stod(run.output.substr(at + 13)), 0.3) << run.output;
+  const CairnRun noise = RunCairn("occupancy --scenario " + BoxesOnFloor() + " --model wta --frames 1 --noise-var 0 --json");
+  ASSERT_EQ(noise.exit_code, 0) << noise.output;
+  EXPECT_THAT(noise.output, HasSubstr("\"noise_var\": 0,"));
+  const CairnRun too_many = RunCairn("occupancy --scenario " + BoxesOnFloor() + " --frames 11");
+  EXPECT_EQ(too_many.exit_code, 1);
+  EXPECT_THAT(too_many.output, HasSubstr("has 10 frames"));
+}
+
+TEST(PerceptionCommandsTest, OccupancyReportsTheKeyAndLineOfAMalformedScenario) {
+  std::ifstream in(BoxesOnFloor());
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "half_extents: [0.25, 0.25, 0.25]";
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+  text.replace(at, from.size(), "half_extents: [0.25, 0.25]");
+  const std::string path = ::testing::TempDir() + "/perception_commands_bad_scenario.yaml";
+  std::ofstream(path) << text;
+  const CairnRun run = RunCairn("occupancy --scenario " + path);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.output, HasSubstr("line " + std::to_string(line) + ": 'objects[2].half_extents' must be a list of 3"));
 }
 
 }  // namespace

@@ -106,21 +106,23 @@ TEST_F(BarsScenarioTest, CostCurveGridRecoversAllSevenBarsAndWtaDoesNot) {
       std::putchar('\n');
     }
   }
+  // Measured (noise-free, 20 frames, 640 x 480, 5 cm cells): cost-curve precision 0.978 (fp 7), recall 0.920,
+  // all 7 bars (the misses are the bars' back rows, seen only obliquely); WTA precision 0.687 / 0.645 / 0.625 for
+  // peak ratios 1.4 / 1.5 / 1.6 (fp 153 / 185 / 202: ghost bars and halos that a stricter filter leaves uncarved)
+  // at recall 1.0.
   EXPECT_EQ(cc.bars_found, 7);
-  EXPECT_GT(cc.score.recall, 0.95);
+  EXPECT_GE(cc.score.precision, 0.9);
+  EXPECT_GT(cc.score.recall, 0.85);
   const double ratios[3] = {1.4, 1.5, 1.6};
   for (int i = 0; i < 3; ++i) {
     const BarsResult w = Score(*wta_[i]);
     std::printf("WTA peak ratio %.1f:     precision %.3f recall %.3f (tp %zu fp %zu n %zu) bars %d min bar recall %.3f\n",
                 ratios[i], w.score.precision, w.score.recall, w.score.true_positives, w.score.false_positives,
                 w.score.num_occupied, w.bars_found, w.min_bar_recall);
-    // Measured (noise-free, 20 frames, 5 cm cells): cost-curve precision 0.493 (fp 344, a one-cell halo round
-    // each bar: the disparity step is 10 cm at 3 m and the 9x9 window fattens the bars by 4 px) against WTA
-    // 0.217-0.220 (fp ~1200: ghost bars and halo). The 0.9 is out of reach at 5 cm cells with a 10 cm
-    // depth step; see the report.
-    EXPECT_GT(cc.score.precision, 0.45);
-    EXPECT_GT(cc.score.precision, 2.0 * w.score.precision) << "peak ratio " << ratios[i];
-    EXPECT_GT(w.score.false_positives, 3 * cc.score.false_positives) << "peak ratio " << ratios[i];
+    // The thesis' finding: no threshold gives a WTA grid without outliers and without holes.
+    EXPECT_TRUE(w.score.false_positives > 10 * cc.score.false_positives || w.bars_found < 7)
+        << "peak ratio " << ratios[i];
+    EXPECT_GT(cc.score.precision, w.score.precision + 0.2) << "peak ratio " << ratios[i];
   }
 }
 
