@@ -13,6 +13,7 @@ void RegisterModelInfoCommand(CommandRegistry* registry);
 void RegisterFrictionCommand(CommandRegistry* registry);
 void RegisterFrictionTrainCommand(CommandRegistry* registry);
 void RegisterFrictionDatasetCommand(CommandRegistry* registry);
+void RegisterPlanCommand(CommandRegistry* registry);
 
 void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPendulumCommand(registry);
@@ -23,6 +24,7 @@ void RegisterAllCommands(CommandRegistry* registry) {
   RegisterFrictionCommand(registry);
   RegisterFrictionTrainCommand(registry);
   RegisterFrictionDatasetCommand(registry);
+  RegisterPlanCommand(registry);
 }
 
 }  // namespace cairn::cli

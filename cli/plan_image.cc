@@ -1,0 +1,92 @@
+#include "plan_image.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "cairn/common/atomic_file.h"
+
+namespace cairn::cli {
+namespace {
+
+using planning::FootPose;
+
+// Friction to colour (BGR): red at 0, yellow at 0.5, green from 1.
+cv::Vec3b FrictionColour(double mu, double shade) {
+  const double t = std::clamp(mu, 0.0, 1.0);
+  const double r = t < 0.5 ? 1.0 : 2.0 * (1.0 - t);
+  const double g = t < 0.5 ? 2.0 * t : 1.0;
+  return cv::Vec3b(0, static_cast<uchar>(std::lround(220 * g * shade)), static_cast<uchar>(std::lround(220 * r * shade)));
+}
+
+}  // namespace
+
+void WritePlanImage(const std::string& path, const planning::TerrainMap& terrain, const planning::FootstepPlan& plan,
+                    const planning::StanceGoal& goal, const planning::BipedGeometry& geometry,
+                    double pixels_per_metre) {
+  const Eigen::Vector2d lo = terrain.min_corner(), hi = terrain.max_corner();
+  const int width = std::max(1, static_cast<int>(std::lround((hi.x() - lo.x()) * pixels_per_metre)));
+  const int height = std::max(1, static_cast<int>(std::lround((hi.y() - lo.y()) * pixels_per_metre)));
+  if (static_cast<double>(width) * height > 64e6) {
+    throw std::invalid_argument("The plan image would be " + std::to_string(width) + " x " + std::to_string(height) +
+                                " pixels; use a smaller scale.");
+  }
+  // Image rows grow downwards while y grows up: row 0 is the largest y.
+  auto to_pixel = [&](double x, double y) {
+    return cv::Point2d((x - lo.x()) * pixels_per_metre, (hi.y() - y) * pixels_per_metre);
+  };
+  double zmin = 1e300, zmax = -1e300;
+  for (int r = 0; r < terrain.rows(); ++r) {
+    for (int c = 0; c < terrain.cols(); ++c) {
+      if (terrain.has_ground(c, r)) {
+        zmin = std::min(zmin, terrain.height(c, r));
+        zmax = std::max(zmax, terrain.height(c, r));
+      }
+    }
+  }
+  cv::Mat image(height, width, CV_8UC3, cv::Scalar(0, 0, 0));
+  for (int v = 0; v < height; ++v) {
+    for (int u = 0; u < width; ++u) {
+      const double x = lo.x() + (u + 0.5) / pixels_per_metre, y = hi.y() - (v + 0.5) / pixels_per_metre;
+      int c, r;
+      if (!terrain.CellAt(x, y, &c, &r) || !terrain.has_ground(c, r)) continue;
+      const double shade = zmax > zmin ? 0.6 + 0.4 * (terrain.height(c, r) - zmin) / (zmax - zmin) : 1.0;
+      image.at<cv::Vec3b>(v, u) = FrictionColour(terrain.friction(c, r), shade);
+    }
+  }
+  auto polygon = [&](const Eigen::Vector2d& center, double half_x, double half_y, double yaw) {
+    const Eigen::Vector2d ax(std::cos(yaw), std::sin(yaw)), ay(-std::sin(yaw), std::cos(yaw));
+    std::vector<cv::Point> points;
+    for (const auto& [sx, sy] : {std::pair{1, 1}, std::pair{-1, 1}, std::pair{-1, -1}, std::pair{1, -1}}) {
+      const Eigen::Vector2d p = center + sx * half_x * ax + sy * half_y * ay;
+      points.push_back(to_pixel(p.x(), p.y()));
+    }
+    return points;
+  };
+  for (const planning::TerrainMap::Obstacle& o : terrain.obstacles()) {
+    const std::vector<cv::Point> box = polygon(o.center.head<2>(), o.half_extents.x(), o.half_extents.y(), o.yaw);
+    cv::fillConvexPoly(image, box, cv::Scalar(70, 70, 70), cv::LINE_AA);
+  }
+  const int thickness = std::max(1, static_cast<int>(std::lround(pixels_per_metre / 60.0)));
+  auto sole = [&](const FootPose& pose, const cv::Scalar& colour) {
+    const std::vector<cv::Point> outline =
+        polygon(Eigen::Vector2d(pose.x, pose.y), 0.5 * geometry.foot_length, 0.5 * geometry.foot_width, pose.theta);
+    cv::polylines(image, outline, true, colour, thickness, cv::LINE_AA);
+  };
+  sole(goal.stance.left, cv::Scalar(0, 255, 255));
+  sole(goal.stance.right, cv::Scalar(0, 255, 255));
+  sole(plan.start.left, cv::Scalar(255, 255, 255));
+  sole(plan.start.right, cv::Scalar(255, 255, 255));
+  for (const planning::PlannedStep& step : plan.steps) {
+    sole(step.pose, step.side == planning::FootSide::kLeft ? cv::Scalar(255, 80, 0) : cv::Scalar(40, 0, 200));
+  }
+  std::vector<uchar> bytes;
+  if (!cv::imencode(".png", image, bytes)) throw std::runtime_error("Cannot encode '" + path + "' as PNG.");
+  WriteFileAtomically(path, std::string(bytes.begin(), bytes.end()));
+}
+
+}  // namespace cairn::cli

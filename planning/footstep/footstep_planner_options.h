@@ -1,0 +1,24 @@
+#pragma once
+
+#include <cmath>
+
+#include <cairn/planning/footstep/ara_star.h>
+
+namespace cairn::planning {
+
+/// Settings of the footstep search (thesis 2.4.1a: 5 cm grid, D = 24 footstep directions, ARA*).
+struct FootstepPlannerOptions {
+  /// Spacing of the foothold lattice, m.
+  double lattice_resolution{0.05};
+  /// Number of uniform footstep directions D (at most 32).
+  int orientations{24};
+  /// Steepest ground a sole may stand on, rad.
+  double max_slope{30.0 * M_PI / 180.0};
+  /// Largest distance of the ground under the sole from the foothold's plane, m: larger gaps or bumps (a stair
+  /// edge under the heel) leave the foot unsupported.
+  double support_tolerance{0.02};
+  /// ARA*: initial ε, its decrement and the wall-clock budget.
+  AraStarOptions search;
+};
+
+}  // namespace cairn::planning

@@ -1,0 +1,75 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <cairn/perception/friction/friction_distribution.h>
+#include <cairn/planning/footstep/foot_pose.h>
+#include <cairn/planning/footstep/footstep_planner_options.h>
+#include <cairn/planning/footstep/terrain_map.h>
+
+namespace cairn::planning {
+
+/// A footstep planning problem read from YAML (schema: docs/scenarios.md): terrain regions with heights, slopes
+/// and friction distributions, box obstacles, start and goal stances, the robot, the objective, η and the
+/// planner's settings. Errors name the file, the line and the key.
+class FootstepScenario {
+ public:
+  /// A patch of ground: a polygon (a box is a 4-gon) carrying a plane and a friction distribution.
+  struct Region {
+    std::string name;
+    std::vector<Eigen::Vector2d> polygon;  ///< counter-clockwise or clockwise, at least 3 vertices
+    double height{0.0};                    ///< at `slope_origin`, m
+    double slope{0.0};                     ///< rad
+    double uphill{0.0};                    ///< direction of steepest ascent, rad from the x axis
+    Eigen::Vector2d slope_origin{Eigen::Vector2d::Zero()};
+    perception::FrictionDistribution friction{perception::FrictionDistribution::Normal(1.0, 0.0)};
+    std::string friction_source;  ///< "mu 0.12", "material asphalt", "normal(0.5, 0.1)", for reports
+
+    /// Ground height of the region's plane at (x, y).
+    double HeightAt(const Eigen::Vector2d& p) const;
+    Eigen::Vector3d Normal() const;
+    bool Contains(const Eigen::Vector2d& p) const;
+  };
+
+  /// Reads and validates a scenario; throws std::invalid_argument naming the file, the line and the key.
+  static FootstepScenario Load(const std::string& path);
+
+  const std::string& path() const { return path_; }
+  const std::string& name() const { return name_; }
+  /// The robot's walking-model YAML, resolved against the scenario's folder; empty for the default robot.
+  const std::string& robot() const { return robot_; }
+  /// "ecom", "ecom_heat", "time" or "torque" (checked by the caller that owns the objectives).
+  const std::string& objective() const { return objective_; }
+  double eta() const { return eta_; }
+  const std::vector<Region>& regions() const { return regions_; }
+  const std::vector<TerrainMap::Obstacle>& obstacles() const { return obstacles_; }
+  const Stance& start() const { return start_; }
+  const StanceGoal& goal() const { return goal_; }
+  const FootstepPlannerOptions& planner() const { return planner_; }
+  FootstepPlannerOptions& mutable_planner() { return planner_; }
+  void set_objective(const std::string& objective) { objective_ = objective; }
+
+  /// Rasterises the regions (later regions paint over earlier ones) and obstacles. A cell's friction is the
+  /// (1 - eta) quantile of its region's distribution, the chance constraint of thesis eq. 5.3.
+  TerrainMap BuildTerrain() const;
+
+ private:
+  std::string path_;
+  std::string name_;
+  std::string robot_;
+  std::string objective_{"ecom_heat"};
+  double eta_{0.95};
+  Eigen::Vector2d min_corner_{Eigen::Vector2d::Zero()};
+  Eigen::Vector2d max_corner_{Eigen::Vector2d::Zero()};
+  double resolution_{0.025};
+  std::vector<Region> regions_;
+  std::vector<TerrainMap::Obstacle> obstacles_;
+  Stance start_;
+  StanceGoal goal_;
+  FootstepPlannerOptions planner_;
+};
+
+}  // namespace cairn::planning

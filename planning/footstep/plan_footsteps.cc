@@ -1,0 +1,138 @@
+#include <cairn/planning/footstep/plan_footsteps.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include <cairn/planning/footstep/ara_star.h>
+#include <cairn/planning/footstep/stance_graph.h>
+
+namespace cairn::planning {
+namespace {
+
+std::string DescribeFoot(const char* what, FootSide side, const FootPose& pose) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << what << " " << FootSideName(side) << " foot at (" << pose.x << ", "
+      << pose.y << ")";
+  return out.str();
+}
+
+// Why the foothold under `pose` cannot carry a foot, or "" when it can.
+std::string CheckFoothold(StanceGraph& graph, const TerrainMap& terrain, const char* what, FootSide side,
+                          const FootPose& pose, StanceGraph::LatticeFoot* foot) {
+  if (!graph.Snap(pose, foot)) {
+    return DescribeFoot(what, side, pose) + " lies outside the terrain map";
+  }
+  if (!graph.EvaluateFoothold(*foot).supported) {
+    int col, row;
+    std::string detail = "its sole lacks flat, walkable ground";
+    if (terrain.CellAt(pose.x, pose.y, &col, &row) && terrain.has_ground(col, row) &&
+        terrain.friction(col, row) <= 0.0) {
+      detail = "the ground there is not walkable (friction 0)";
+    }
+    return DescribeFoot(what, side, pose) + " is not supported: " + detail;
+  }
+  return "";
+}
+
+// The search found no plan although it was not stopped: tell "every way needs more friction" from "no way at
+// all" by planning again with friction ignored.
+std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& starts, const FootstepPlannerOptions& options,
+                     const FootstepPlanStatistics& statistics, const StepCostModel& cost_model) {
+  std::ostringstream reason;
+  graph.set_ignore_friction(true);
+  if (!std::isfinite(graph.Heuristic(starts[0]))) {
+    reason << "the goal is unreachable: no chain of supported footholds, each within one step ("
+           << std::setprecision(3) << std::hypot(cost_model.reach().dx_max, cost_model.reach().dy_max)
+           << " m) of the last and clear of obstacles, connects the start to the goal";
+    return reason.str();
+  }
+  AraStarOptions relaxed = options.search;
+  relaxed.initial_epsilon = std::max(relaxed.initial_epsilon, 3.0);
+  relaxed.epsilon_step = 1e9;  // the first plan answers the question
+  const AraStarResult<StanceGraph::Key> frictionless = AraStar(graph, starts, relaxed);
+  if (frictionless.found) {
+    double needed = 0.0;
+    for (std::size_t k = 1; k < frictionless.path.size(); ++k) {
+      needed = std::max(needed, graph.Transition(frictionless.path[k - 1], frictionless.path[k]).transition.rcof);
+    }
+    reason << std::setprecision(3) << "every way to the goal needs more friction than the terrain offers (a path "
+           << "ignoring friction needs an RCOF of " << needed << "); lower eta to accept more risk or choose another goal";
+  } else if (frictionless.exhausted) {
+    reason << "the goal is unreachable: no sequence of supported, collision-free steps leads there ("
+           << statistics.expansions << " stances expanded, " << statistics.rejected_support
+           << " footholds without support, " << statistics.rejected_collision << " stances in collision)";
+  } else {
+    reason << "no plan: the search found none, and within the budget it could not tell whether friction or the "
+              "terrain's shape blocks the way";
+  }
+  return reason.str();
+}
+
+}  // namespace
+
+FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const StanceGoal& goal,
+                           const StepCostModel& cost_model, const BipedGeometry& geometry,
+                           const FootstepPlannerOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  StanceGraph graph(terrain, cost_model, geometry, options, goal);
+  FootstepPlan plan;
+  plan.cost_model = cost_model.description();
+  plan.start = start;
+
+  StanceGraph::LatticeFoot left, right, goal_left, goal_right;
+  for (const std::string& reason :
+       {CheckFoothold(graph, terrain, "start", FootSide::kLeft, start.left, &left),
+        CheckFoothold(graph, terrain, "start", FootSide::kRight, start.right, &right),
+        CheckFoothold(graph, terrain, "goal", FootSide::kLeft, goal.stance.left, &goal_left),
+        CheckFoothold(graph, terrain, "goal", FootSide::kRight, goal.stance.right, &goal_right)}) {
+    if (!reason.empty()) {
+      plan.reason = reason;
+      plan.statistics.plan_seconds = seconds();
+      return plan;
+    }
+  }
+  plan.start.left = graph.PoseOf(left);
+  plan.start.right = graph.PoseOf(right);
+
+  // Either foot may move first: the stance where the left foot landed last lets the right foot move, and vice versa.
+  const std::vector<StanceGraph::Key> starts = {graph.MakeKey(right, left, FootSide::kLeft),
+                                                graph.MakeKey(left, right, FootSide::kRight)};
+  const AraStarResult<StanceGraph::Key> result = AraStar(graph, starts, options.search);
+  plan.statistics.expansions = result.expansions;
+  plan.statistics.generated = result.generated;
+  plan.statistics.improvements = static_cast<int>(result.improvements.size());
+  plan.statistics.rejected_support = graph.rejections().rejected_support;
+  plan.statistics.rejected_collision = graph.rejections().rejected_collision;
+  plan.statistics.rejected_friction = graph.rejections().rejected_friction;
+
+  if (result.found) {
+    plan.found = true;
+    plan.statistics.first_plan_seconds = result.improvements.front().seconds;
+    plan.statistics.epsilon = result.bound;
+    for (std::size_t k = 1; k < result.path.size(); ++k) {
+      plan.steps.push_back(graph.Transition(result.path[k - 1], result.path[k]));
+    }
+    plan.first_side = plan.steps.empty() ? FootSide::kLeft : plan.steps.front().side;
+    plan.UpdateTotals();
+    plan.statistics.plan_seconds = seconds();
+    return plan;
+  }
+
+  std::ostringstream reason;
+  if (result.time_limit_reached || result.expansion_limit_reached) {
+    reason << "no plan within the search budget (" << (result.time_limit_reached ? "time limit " : "expansion limit ")
+           << (result.time_limit_reached ? options.search.time_limit : static_cast<double>(options.search.max_expansions))
+           << (result.time_limit_reached ? " s" : "") << ", " << result.expansions
+           << " stances expanded); raise the limit or start with a larger initial epsilon";
+  } else {
+    reason << Diagnose(graph, starts, options, plan.statistics, cost_model);
+  }
+  plan.reason = reason.str();
+  plan.statistics.plan_seconds = seconds();
+  return plan;
+}
+
+}  // namespace cairn::planning

@@ -1,0 +1,494 @@
+#include <cairn/planning/footstep/stance_graph.h>
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <cairn/planning/footstep/internal/yaw_box.h>
+
+namespace cairn::planning {
+namespace {
+
+constexpr int kPositionBits = 12;
+constexpr int kYawBits = 5;
+constexpr int kFootBits = 2 * kPositionBits + kYawBits;
+constexpr std::uint64_t kFootMask = (std::uint64_t{1} << kFootBits) - 1;
+// Friction high enough to lift any friction limit of a step cost model.
+constexpr double kUnlimitedFriction = 1e3;
+
+double WrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
+
+std::uint32_t PackFoot(const StanceGraph::LatticeFoot& f) {
+  return static_cast<std::uint32_t>(f.ix) | (static_cast<std::uint32_t>(f.iy) << kPositionBits) |
+         (static_cast<std::uint32_t>(f.itheta) << (2 * kPositionBits));
+}
+
+StanceGraph::LatticeFoot UnpackFoot(std::uint64_t bits) {
+  StanceGraph::LatticeFoot f;
+  f.ix = static_cast<int>(bits & ((1u << kPositionBits) - 1));
+  f.iy = static_cast<int>((bits >> kPositionBits) & ((1u << kPositionBits) - 1));
+  f.itheta = static_cast<int>((bits >> (2 * kPositionBits)) & ((1u << kYawBits) - 1));
+  return f;
+}
+
+}  // namespace
+
+StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_model, const BipedGeometry& geometry,
+                         const FootstepPlannerOptions& options, const StanceGoal& goal)
+    : terrain_(terrain), cost_model_(cost_model), geometry_(geometry), options_(options), goal_(goal) {
+  auto fail = [](const std::string& what) { throw std::invalid_argument("StanceGraph: " + what); };
+  if (!(options.lattice_resolution > 0.0)) {
+    fail("lattice_resolution must be a positive length, got " + std::to_string(options.lattice_resolution));
+  }
+  if (options.orientations < 1 || options.orientations > (1 << kYawBits)) {
+    fail("orientations must be in [1, 32], got " + std::to_string(options.orientations));
+  }
+  if (!(options.max_slope > 0.0 && options.max_slope < M_PI / 2)) {
+    fail("max_slope must be in (0, pi/2) rad, got " + std::to_string(options.max_slope));
+  }
+  if (!(options.support_tolerance >= 0.0)) {
+    fail("support_tolerance must be >= 0 m, got " + std::to_string(options.support_tolerance));
+  }
+  if (!(geometry.foot_length > 0.0 && geometry.foot_width > 0.0)) {
+    fail("the sole must have a positive length and width");
+  }
+  if (!(goal.position_tolerance >= 0.0 && goal.yaw_tolerance >= 0.0)) {
+    fail("goal tolerances must be >= 0");
+  }
+  const Eigen::Vector2d extent = terrain.max_corner() - terrain.min_corner();
+  lattice_cols_ = static_cast<int>(std::floor(extent.x() / options.lattice_resolution)) + 1;
+  lattice_rows_ = static_cast<int>(std::floor(extent.y() / options.lattice_resolution)) + 1;
+  if (lattice_cols_ > (1 << kPositionBits) || lattice_rows_ > (1 << kPositionBits)) {
+    std::ostringstream message;
+    message << "StanceGraph: the terrain (" << extent.x() << " x " << extent.y() << " m) needs a lattice of "
+            << lattice_cols_ << " x " << lattice_rows_ << " footholds at " << options.lattice_resolution
+            << " m; at most 4096 per axis are supported. Crop the terrain or coarsen the lattice.";
+    throw std::invalid_argument(message.str());
+  }
+  min_cost_per_metre_ = cost_model.min_cost_per_metre();
+  min_cost_per_step_ = cost_model.min_cost_per_step();
+  const StepReach& reach = cost_model.reach();
+  max_step_length_ = std::hypot(std::max(std::abs(reach.dx_min), std::abs(reach.dx_max)),
+                                std::max(std::abs(reach.dy_min), std::abs(reach.dy_max)));
+  if (!(min_cost_per_step_ >= 0.0) || !std::isfinite(min_cost_per_step_) || !(max_step_length_ > 0.0)) {
+    fail("the step cost model needs a finite min_cost_per_step() >= 0 and a reach box of positive size");
+  }
+  for (int k = 0; k < 2 * options.orientations; ++k) {
+    const double yaw = M_PI * k / options.orientations;
+    half_bin_cos_.push_back(std::cos(yaw));
+    half_bin_sin_.push_back(std::sin(yaw));
+  }
+  ComputeChainDistances();
+  if (!(min_cost_per_metre_ >= 0.0) || !std::isfinite(min_cost_per_metre_)) {
+    fail("the step cost model's min_cost_per_metre() must be finite and >= 0, got " +
+         std::to_string(min_cost_per_metre_));
+  }
+}
+
+Eigen::Vector2d StanceGraph::Position(const LatticeFoot& foot) const {
+  return terrain_.origin() + options_.lattice_resolution * Eigen::Vector2d(foot.ix, foot.iy);
+}
+
+double StanceGraph::Yaw(int itheta) const {
+  const int d = options_.orientations;
+  return 2.0 * M_PI * ((itheta + d / 2) % d - d / 2) / d;  // in [-pi, pi)
+}
+
+bool StanceGraph::Snap(const FootPose& pose, LatticeFoot* foot) const {
+  const double fx = std::round((pose.x - terrain_.origin().x()) / options_.lattice_resolution);
+  const double fy = std::round((pose.y - terrain_.origin().y()) / options_.lattice_resolution);
+  if (!(fx >= 0 && fy >= 0 && fx < lattice_cols_ && fy < lattice_rows_)) return false;
+  foot->ix = static_cast<int>(fx);
+  foot->iy = static_cast<int>(fy);
+  const int d = options_.orientations;
+  foot->itheta = ((static_cast<int>(std::lround(pose.theta / (2.0 * M_PI) * d)) % d) + d) % d;
+  return true;
+}
+
+FootPose StanceGraph::PoseOf(const LatticeFoot& foot) const {
+  const Eigen::Vector2d p = Position(foot);
+  FootPose pose;
+  pose.x = p.x();
+  pose.y = p.y();
+  pose.theta = Yaw(foot.itheta);
+  const auto it = footholds_.find(PackFoot(foot));
+  pose.z = it != footholds_.end() ? it->second.z : 0.0;
+  return pose;
+}
+
+const StanceGraph::Foothold& StanceGraph::EvaluateFoothold(const LatticeFoot& foot) {
+  const auto [it, inserted] = footholds_.try_emplace(PackFoot(foot));
+  Foothold& result = it->second;
+  if (!inserted) return result;
+  const Eigen::Vector2d p = Position(foot);
+  int col, row;
+  if (!terrain_.CellAt(p.x(), p.y(), &col, &row) || !terrain_.walkable(col, row)) return result;
+  const Eigen::Vector3d n = terrain_.normal(col, row);
+  if (std::acos(std::min(1.0, n.z())) > options_.max_slope) return result;
+  // The foothold's plane: through the centre cell's ground point, with its normal.
+  const Eigen::Vector2d c = terrain_.CellCenter(col, row);
+  const double hc = terrain_.height(col, row);
+  auto plane = [&](const Eigen::Vector2d& q) { return hc - (n.x() * (q.x() - c.x()) + n.y() * (q.y() - c.y())) / n.z(); };
+  const double yaw = Yaw(foot.itheta);
+  const Eigen::Vector2d ax(std::cos(yaw), std::sin(yaw)), ay(-std::sin(yaw), std::cos(yaw));
+  // 5 x 3 samples spread over the sole, just inside its edges.
+  double friction = terrain_.friction(col, row);
+  for (int i = -2; i <= 2; ++i) {
+    for (int j = -1; j <= 1; ++j) {
+      const Eigen::Vector2d q = p + (0.49 * geometry_.foot_length * i / 2.0) * ax + (0.49 * geometry_.foot_width * j) * ay;
+      int qc, qr;
+      if (!terrain_.CellAt(q.x(), q.y(), &qc, &qr) || !terrain_.walkable(qc, qr)) return result;
+      if (std::abs(terrain_.height(qc, qr) - plane(terrain_.CellCenter(qc, qr))) > options_.support_tolerance) {
+        return result;
+      }
+      friction = std::min(friction, terrain_.friction(qc, qr));
+    }
+  }
+  result.supported = true;
+  result.z = plane(p);
+  result.friction = friction;
+  result.normal = n;
+  return result;
+}
+
+StanceGraph::Key StanceGraph::MakeKey(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side) const {
+  return static_cast<Key>(PackFoot(older)) | (static_cast<Key>(PackFoot(newer)) << kFootBits) |
+         (static_cast<Key>(newer_side == FootSide::kRight) << (2 * kFootBits));
+}
+
+void StanceGraph::Decode(Key key, LatticeFoot* older, LatticeFoot* newer, FootSide* newer_side) const {
+  *older = UnpackFoot(key & kFootMask);
+  *newer = UnpackFoot((key >> kFootBits) & kFootMask);
+  *newer_side = ((key >> (2 * kFootBits)) & 1) ? FootSide::kRight : FootSide::kLeft;
+}
+
+double StanceGraph::Heuristic(Key key) const {
+  LatticeFoot older, newer;
+  FootSide side;
+  Decode(key, &older, &newer, &side);
+  if (IsGoal(key)) return 0.0;
+  // Unless both feet are done, the older foot moves next (feet alternate), so every foot still to be placed
+  // lies on the chain from the newer foot, and the chain must reach both goal footholds.
+  const double chain = std::max(ChainDistance(newer, 0), ChainDistance(newer, 1));
+  const double stride = stride_distance_[side == FootSide::kLeft ? 0 : 1]
+                                        [static_cast<std::size_t>(newer.iy) * lattice_cols_ + newer.ix];
+  return std::max(chain, stride);
+}
+
+bool StanceGraph::IsGoal(Key key) const {
+  LatticeFoot older, newer;
+  FootSide side;
+  Decode(key, &older, &newer, &side);
+  const LatticeFoot& left = side == FootSide::kLeft ? newer : older;
+  const LatticeFoot& right = side == FootSide::kLeft ? older : newer;
+  auto near = [&](const LatticeFoot& f, const FootPose& g) {
+    const Eigen::Vector2d p = Position(f);
+    return std::hypot(p.x() - g.x, p.y() - g.y) <= goal_.position_tolerance &&
+           std::abs(WrapAngle(Yaw(f.itheta) - g.theta)) <= goal_.yaw_tolerance;
+  };
+  return near(left, goal_.stance.left) && near(right, goal_.stance.right);
+}
+
+bool StanceGraph::EvaluateStep(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side,
+                               const LatticeFoot& target, PlannedStep* step, bool count_rejections) {
+  const FootSide moving = OtherSide(newer_side);
+  const double sigma = moving == FootSide::kLeft ? 1.0 : -1.0;
+  const Eigen::Vector2d pn = Position(newer), pt = Position(target);
+  const double cn = half_bin_cos_[2 * newer.itheta], sn = half_bin_sin_[2 * newer.itheta];
+  const int bins = BinDelta(newer.itheta, target.itheta);
+  const double yaw_step = 2.0 * M_PI / options_.orientations;
+  const Eigen::Vector2d delta = pt - pn;
+  StepDisplacement d;
+  d.dx = cn * delta.x() + sn * delta.y();
+  d.dy = sigma * (-sn * delta.x() + cn * delta.y());
+  d.dtheta = sigma * bins * yaw_step;
+  const StepReach& reach = cost_model_.reach();
+  if (d.dx < reach.dx_min || d.dx > reach.dx_max || d.dy < reach.dy_min || d.dy > reach.dy_max ||
+      d.dtheta < reach.dtheta_min - 1e-9 || d.dtheta > reach.dtheta_max + 1e-9) {
+    return false;
+  }
+  // The lateral spacing must also hold across the stance's mean heading (the pelvis'): measured only in the stance
+  // foot's frame, splayed feet (one turned out, the other in) would stand closer than the legs allow.
+  if (bins != 0) {
+    const double yaw_mid = Yaw(newer.itheta) + 0.5 * bins * yaw_step;
+    if (sigma * (-std::sin(yaw_mid) * delta.x() + std::cos(yaw_mid) * delta.y()) < reach.dy_min) return false;
+  }
+  const Foothold& ft = EvaluateFoothold(target);
+  if (!ft.supported) {
+    if (count_rejections) ++rejections_.rejected_support;
+    return false;
+  }
+  const Foothold& fn = EvaluateFoothold(newer);
+  const Foothold& fo = EvaluateFoothold(older);
+  d.dz = ft.z - fn.z;
+  if (d.dz < reach.dz_min || d.dz > reach.dz_max) return false;
+  const Eigen::Vector3d sole(0.5 * geometry_.foot_length, 0.5 * geometry_.foot_width, 1.0);
+  if (delta.squaredNorm() < sole.head<2>().squaredNorm() * 4.0 &&
+      internal::YawBoxesOverlap(Eigen::Vector3d(pt.x(), pt.y(), 0.0), sole, Yaw(target.itheta),
+                                Eigen::Vector3d(pn.x(), pn.y(), 0.0), sole, Yaw(newer.itheta))) {
+    if (count_rejections) ++rejections_.rejected_collision;
+    return false;
+  }
+  if (!terrain_.obstacles().empty()) {
+    const Eigen::Vector2d mid = 0.5 * (pn + pt);
+    const double body_z = std::max(ft.z, fn.z) + geometry_.body_bottom + geometry_.body_half_extents.z();
+    if (terrain_.BoxHitsObstacle(Eigen::Vector3d(mid.x(), mid.y(), body_z), geometry_.body_half_extents,
+                                 Yaw(newer.itheta) + 0.5 * bins * yaw_step)) {
+      if (count_rejections) ++rejections_.rejected_collision;
+      return false;
+    }
+  }
+  const double mu = ignore_friction_ ? kUnlimitedFriction : std::min({fo.friction, fn.friction, ft.friction});
+  TransitionCost cost = cost_model_.Evaluate(d, mu);
+  if (!cost.feasible) {
+    if (count_rejections && cost_model_.Evaluate(d, kUnlimitedFriction).feasible) ++rejections_.rejected_friction;
+    return false;
+  }
+  step->side = moving;
+  step->pose = PoseOf(target);
+  step->displacement = d;
+  step->mu_allowed = mu;
+  step->transition = cost;
+  return true;
+}
+
+void StanceGraph::GenerateSuccessors(Key key, std::vector<std::pair<Key, double>>* out) {
+  LatticeFoot older, newer;
+  FootSide newer_side;
+  Decode(key, &older, &newer, &newer_side);
+  const FootSide moving = OtherSide(newer_side);
+  const double sigma = moving == FootSide::kLeft ? 1.0 : -1.0;
+  const StepReach& reach = cost_model_.reach();
+  const Eigen::Vector2d pn = Position(newer);
+  const double cn = half_bin_cos_[2 * newer.itheta], sn = half_bin_sin_[2 * newer.itheta];
+  const Eigen::Vector2d ax(cn, sn), ay(-sn, cn);
+  // Lattice positions in the bounding box of the reach rectangle.
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e30), hi = Eigen::Vector2d::Constant(-1e30);
+  for (double dx : {reach.dx_min, reach.dx_max}) {
+    for (double dy : {reach.dy_min, reach.dy_max}) {
+      const Eigen::Vector2d corner = pn + dx * ax + sigma * dy * ay;
+      lo = lo.cwiseMin(corner);
+      hi = hi.cwiseMax(corner);
+    }
+  }
+  const double res = options_.lattice_resolution;
+  const int ix0 = std::max(0, static_cast<int>(std::ceil((lo.x() - terrain_.origin().x()) / res - 1e-9)));
+  const int ix1 = std::min(lattice_cols_ - 1, static_cast<int>(std::floor((hi.x() - terrain_.origin().x()) / res + 1e-9)));
+  const int iy0 = std::max(0, static_cast<int>(std::ceil((lo.y() - terrain_.origin().y()) / res - 1e-9)));
+  const int iy1 = std::min(lattice_rows_ - 1, static_cast<int>(std::floor((hi.y() - terrain_.origin().y()) / res + 1e-9)));
+  const int d = options_.orientations;
+  const double yaw_step = 2.0 * M_PI / d;
+  const int k0 = static_cast<int>(std::ceil(reach.dtheta_min / yaw_step - 1e-9));
+  const int k1 = static_cast<int>(std::floor(reach.dtheta_max / yaw_step + 1e-9));
+  PlannedStep step;
+  for (int iy = iy0; iy <= iy1; ++iy) {
+    for (int ix = ix0; ix <= ix1; ++ix) {
+      LatticeFoot target{ix, iy, 0};
+      const Eigen::Vector2d delta = Position(target) - pn;
+      const double dx = delta.dot(ax), dy = sigma * delta.dot(ay);
+      if (dx < reach.dx_min || dx > reach.dx_max || dy < reach.dy_min || dy > reach.dy_max) continue;
+      if (!std::isfinite(ChainDistance(target, 0)) || !std::isfinite(ChainDistance(target, 1))) continue;
+      for (int k = k0; k <= k1; ++k) {
+        target.itheta = (((newer.itheta + static_cast<int>(sigma) * k) % d) + d) % d;
+        if (EvaluateStep(older, newer, newer_side, target, &step, true)) {
+          out->emplace_back(MakeKey(newer, target, moving), step.transition.cost);
+        }
+      }
+    }
+  }
+}
+
+void StanceGraph::ComputeChainDistances() {
+  const std::size_t n = static_cast<std::size_t>(lattice_cols_) * lattice_rows_;
+  // Positions where a sole fits in at least one orientation, with the most friction any such sole finds.
+  std::vector<char> usable(n, 0);
+  std::vector<double> ground(n, 0.0);  // a foothold's height does not depend on its yaw
+  std::vector<float> friction(n, 0.0f);
+  for (int iy = 0; iy < lattice_rows_; ++iy) {
+    for (int ix = 0; ix < lattice_cols_; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(iy) * lattice_cols_ + ix;
+      for (int it = 0; it < options_.orientations; ++it) {
+        const Foothold& foothold = EvaluateFoothold(LatticeFoot{ix, iy, it});
+        if (!foothold.supported) continue;
+        usable[i] = 1;
+        ground[i] = foothold.z;
+        friction[i] = std::max(friction[i], static_cast<float>(foothold.friction));
+      }
+    }
+  }
+  // Two consecutive footholds form a stance whose body box contains the disc of radius min(half x, half y)
+  // around the point above their midpoint, whatever its yaw: if an obstacle reaches into that disc at every
+  // height the body can have there, no real step exists.
+  const double body_height = 2.0 * geometry_.body_half_extents.z();
+  const double body_radius = std::min(geometry_.body_half_extents.x(), geometry_.body_half_extents.y());
+  auto midpoint_blocked = [&](const Eigen::Vector2d& m, double feet_top) {
+    const double bottom = feet_top + geometry_.body_bottom;
+    for (const TerrainMap::Obstacle& o : terrain_.obstacles()) {
+      if (!(o.center.z() - o.half_extents.z() < bottom + body_height && o.center.z() + o.half_extents.z() > bottom)) {
+        continue;
+      }
+      const Eigen::Vector2d d = m - o.center.head<2>();
+      const double c = std::cos(o.yaw), s = std::sin(o.yaw);
+      const double gx = std::max(0.0, std::abs(c * d.x() + s * d.y()) - o.half_extents.x());
+      const double gy = std::max(0.0, std::abs(-s * d.x() + c * d.y()) - o.half_extents.y());
+      if (gx * gx + gy * gy < body_radius * body_radius) return true;
+    }
+    return false;
+  };
+  ComputeStrideDistances(usable, friction);
+  const bool has_obstacles = !terrain_.obstacles().empty();
+  // A real step between footholds at p and q uses at most the friction both offer, and its cost is at least the
+  // model's bound there (friction values are few: one per region, so the bounds are memoised).
+  std::unordered_map<float, StepCostLowerBound> bounds;
+  auto bound_at = [&](float mu) -> const StepCostLowerBound& {
+    auto it = bounds.find(mu);
+    if (it == bounds.end()) it = bounds.emplace(mu, cost_model_.cost_lower_bound(ignore_friction_ ? kUnlimitedFriction : mu)).first;
+    return it->second;
+  };
+  const double res = options_.lattice_resolution;
+  const int radius = static_cast<int>(std::floor(max_step_length_ / res + 1e-9));
+  std::vector<std::pair<int, int>> offsets;
+  std::vector<double> lengths;
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const double length = res * std::hypot(dx, dy);
+      if ((dx != 0 || dy != 0) && length <= max_step_length_ + 1e-9) {
+        offsets.emplace_back(dx, dy);
+        lengths.push_back(length);
+      }
+    }
+  }
+  const FootPose* goals[2] = {&goal_.stance.left, &goal_.stance.right};
+  for (int side = 0; side < 2; ++side) {
+    std::vector<double>& dist = chain_distance_[side];
+    dist.assign(n, std::numeric_limits<double>::infinity());
+    using Item = std::pair<double, std::size_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for (int iy = 0; iy < lattice_rows_; ++iy) {
+      for (int ix = 0; ix < lattice_cols_; ++ix) {
+        const std::size_t i = static_cast<std::size_t>(iy) * lattice_cols_ + ix;
+        const Eigen::Vector2d p = Position(LatticeFoot{ix, iy, 0});
+        if (usable[i] && std::hypot(p.x() - goals[side]->x, p.y() - goals[side]->y) <= goal_.position_tolerance) {
+          dist[i] = 0.0;
+          queue.emplace(0.0, i);
+        }
+      }
+    }
+    while (!queue.empty()) {
+      const auto [d, i] = queue.top();
+      queue.pop();
+      if (d > dist[i]) continue;
+      const int ix = static_cast<int>(i % lattice_cols_), iy = static_cast<int>(i / lattice_cols_);
+      for (std::size_t k = 0; k < offsets.size(); ++k) {
+        const int jx = ix + offsets[k].first, jy = iy + offsets[k].second;
+        if (jx < 0 || jy < 0 || jx >= lattice_cols_ || jy >= lattice_rows_) continue;
+        const std::size_t j = static_cast<std::size_t>(jy) * lattice_cols_ + jx;
+        if (!usable[j]) continue;
+        const StepCostLowerBound& b = bound_at(std::min(friction[i], friction[j]));
+        if (!b.any_feasible) continue;
+        const double candidate = d + b.per_step + b.per_metre * lengths[k];
+        if (candidate >= dist[j]) continue;
+        if (has_obstacles && midpoint_blocked(0.5 * (Position(LatticeFoot{ix, iy, 0}) + Position(LatticeFoot{jx, jy, 0})),
+                                              std::max(ground[i], ground[j]))) {
+          continue;
+        }
+        dist[j] = candidate;
+        queue.emplace(candidate, j);
+      }
+    }
+  }
+}
+
+void StanceGraph::ComputeStrideDistances(const std::vector<char>& usable, const std::vector<float>& friction) {
+  const std::size_t n = usable.size();
+  // A stride from p to q is two steps whose three feet include p and q, so both use at most the friction of the
+  // poorer of the two (each position's best orientation); one bound per friction value met.
+  std::unordered_map<float, StrideCostLowerBound> bounds;
+  double longest = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!usable[i] || bounds.count(friction[i])) continue;
+    StrideCostLowerBound b = cost_model_.stride_cost_lower_bound(ignore_friction_ ? kUnlimitedFriction : friction[i]);
+    if (b.any_feasible && !b.stride.empty()) longest = std::max(longest, b.stride.back());
+    bounds.emplace(friction[i], std::move(b));
+  }
+  const double res = options_.lattice_resolution;
+  const int radius = static_cast<int>(std::floor(longest / res + 1e-9));
+  std::vector<std::pair<int, int>> offsets;
+  std::vector<double> lengths;
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const double length = res * std::hypot(dx, dy);
+      if ((dx != 0 || dy != 0) && length <= longest + 1e-9) {
+        offsets.emplace_back(dx, dy);
+        lengths.push_back(length);
+      }
+    }
+  }
+  // Link costs per friction value and offset, computed on first use.
+  std::unordered_map<float, std::vector<double>> link_costs;
+  auto links_for = [&](float mu) -> const std::vector<double>& {
+    auto it = link_costs.find(mu);
+    if (it == link_costs.end()) {
+      const StrideCostLowerBound& b = bounds.at(mu);
+      std::vector<double> costs(offsets.size());
+      for (std::size_t k = 0; k < offsets.size(); ++k) costs[k] = b(lengths[k]);
+      it = link_costs.emplace(mu, std::move(costs)).first;
+    }
+    return it->second;
+  };
+  const FootPose* goals[2] = {&goal_.stance.left, &goal_.stance.right};
+  for (int side = 0; side < 2; ++side) {
+    std::vector<double>& dist = stride_distance_[side];
+    dist.assign(n, std::numeric_limits<double>::infinity());
+    using Item = std::pair<double, std::size_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for (int iy = 0; iy < lattice_rows_; ++iy) {
+      for (int ix = 0; ix < lattice_cols_; ++ix) {
+        const std::size_t i = static_cast<std::size_t>(iy) * lattice_cols_ + ix;
+        const Eigen::Vector2d p = Position(LatticeFoot{ix, iy, 0});
+        if (usable[i] && std::hypot(p.x() - goals[side]->x, p.y() - goals[side]->y) <= goal_.position_tolerance) {
+          dist[i] = 0.0;
+          queue.emplace(0.0, i);
+        }
+      }
+    }
+    while (!queue.empty()) {
+      const auto [d, i] = queue.top();
+      queue.pop();
+      if (d > dist[i]) continue;
+      const int ix = static_cast<int>(i % lattice_cols_), iy = static_cast<int>(i / lattice_cols_);
+      for (std::size_t k = 0; k < offsets.size(); ++k) {
+        const int jx = ix + offsets[k].first, jy = iy + offsets[k].second;
+        if (jx < 0 || jy < 0 || jx >= lattice_cols_ || jy >= lattice_rows_) continue;
+        const std::size_t j = static_cast<std::size_t>(jy) * lattice_cols_ + jx;
+        if (!usable[j]) continue;
+        const double candidate = d + links_for(std::min(friction[i], friction[j]))[k];
+        if (candidate < dist[j]) {
+          dist[j] = candidate;
+          queue.emplace(candidate, j);
+        }
+      }
+    }
+  }
+}
+
+double StanceGraph::ChainDistanceToGoal(const LatticeFoot& foot, FootSide side) {
+  return ChainDistance(foot, side == FootSide::kLeft ? 0 : 1);
+}
+
+PlannedStep StanceGraph::Transition(Key from, Key to) {
+  LatticeFoot older, newer, to_older, to_newer;
+  FootSide newer_side, to_side;
+  Decode(from, &older, &newer, &newer_side);
+  Decode(to, &to_older, &to_newer, &to_side);
+  PlannedStep step;
+  if (!EvaluateStep(older, newer, newer_side, to_newer, &step, false)) {
+    throw std::logic_error("StanceGraph::Transition: the two stances are not connected");
+  }
+  return step;
+}
+
+}  // namespace cairn::planning

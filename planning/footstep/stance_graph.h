@@ -1,0 +1,140 @@
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <cairn/planning/footstep/biped_geometry.h>
+#include <cairn/planning/footstep/foot_pose.h>
+#include <cairn/planning/footstep/footstep_plan.h>
+#include <cairn/planning/footstep/footstep_planner_options.h>
+#include <cairn/planning/footstep/terrain_map.h>
+#include <cairn/planning/locomotion/step_cost_model.h>
+
+namespace cairn::planning {
+
+/// The graph the footstep planner searches (thesis 2.4.1): states are stances (two footholds on a lattice of
+/// `lattice_resolution` positions and `orientations` yaws, plus which foot landed last), and an edge moves the
+/// older foot to a foothold within reach of the newer one. An edge exists when the new sole has ground under it
+/// (support within `support_tolerance` of one plane, no steeper than `max_slope`, walkable friction), the soles do
+/// not overlap, the body box clears every obstacle, and the step cost model finds the step feasible under the
+/// smallest friction of the three feet involved. Its cost is the model's transition cost (eq. 2.4).
+///
+/// The heuristic bounds the cost to go from below. Every future foothold chain starts at the newer foot and ends
+/// at both goal footholds, and each of its links is a step that costs at least the model's lower bound for the
+/// friction under its two ends (StepCostModel::cost_lower_bound: a fixed part plus a part per metre). So the
+/// cheapest such chain in a relaxed graph -- lattice positions that carry a sole in some orientation, linked when
+/// no further apart than the longest step and when no obstacle reaches the body over their midpoint -- is an
+/// admissible heuristic; Dijkstra computes it once per goal foothold. It routes around walls, holes and ground too
+/// slippery to step on, prices slow crossings of slippery ground, and a start it cannot connect to the goal is
+/// unreachable without a search.
+///
+/// A second bound follows the newer foot alone: its future moves are strides, each made of two future steps
+/// (the older foot's, then its own), and a stride costs at least StepCostModel::stride_cost_lower_bound() of its
+/// length. The cheapest relaxed chain of strides to the newer foot's goal foothold bounds the cost to go too, and
+/// more tightly on open ground, because a stride has none of the lateral zig-zag of single steps. The heuristic is
+/// the larger of the two.
+///
+/// Footholds are evaluated once and cached. Satisfies the Graph requirements of AraStar().
+class StanceGraph {
+ public:
+  using Key = std::uint64_t;
+
+  /// A foothold on the lattice: position (ix, iy) * resolution from the terrain's origin, yaw itheta * 2π / D.
+  struct LatticeFoot {
+    int ix{0};
+    int iy{0};
+    int itheta{0};
+  };
+
+  /// What lies under a foothold.
+  struct Foothold {
+    bool supported{false};
+    double z{0.0};
+    double friction{0.0};
+    Eigen::Vector3d normal{Eigen::Vector3d::UnitZ()};
+  };
+
+  /// The references must outlive the graph. Throws std::invalid_argument for a lattice the terrain cannot hold
+  /// (more than 4096 positions per axis) or bad options.
+  StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_model, const BipedGeometry& geometry,
+              const FootstepPlannerOptions& options, const StanceGoal& goal);
+
+  /// When set, steps ignore friction (used to tell "needs more friction" from "unreachable"); recomputes the
+  /// heuristic.
+  void set_ignore_friction(bool ignore) {
+    ignore_friction_ = ignore;
+    ComputeChainDistances();
+  }
+
+  /// The nearest lattice foothold to `pose` (false when outside the lattice).
+  bool Snap(const FootPose& pose, LatticeFoot* foot) const;
+  FootPose PoseOf(const LatticeFoot& foot) const;
+  const Foothold& EvaluateFoothold(const LatticeFoot& foot);
+
+  Key MakeKey(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side) const;
+  void Decode(Key key, LatticeFoot* older, LatticeFoot* newer, FootSide* newer_side) const;
+
+  double Heuristic(Key key) const;
+  bool IsGoal(Key key) const;
+  template <class Emit>
+  void ForEachSuccessor(Key key, Emit&& emit) {
+    successors_.clear();
+    GenerateSuccessors(key, &successors_);
+    for (const auto& [next, cost] : successors_) emit(next, cost);
+  }
+
+  /// The step from stance `from` to its successor `to`, priced again (for plan reconstruction).
+  PlannedStep Transition(Key from, Key to);
+
+  const FootstepPlanStatistics& rejections() const { return rejections_; }
+
+  /// Cost of the cheapest relaxed foothold chain from the lattice position of `foot` to the goal foothold of
+  /// `side` (infinity when none exists); see the class comment.
+  double ChainDistanceToGoal(const LatticeFoot& foot, FootSide side);
+
+ private:
+  void GenerateSuccessors(Key key, std::vector<std::pair<Key, double>>* out);
+  // Prices the move of the older foot to `target`; false when the edge does not exist.
+  bool EvaluateStep(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side, const LatticeFoot& target,
+                    PlannedStep* step, bool count_rejections);
+  Eigen::Vector2d Position(const LatticeFoot& foot) const;
+  void ComputeChainDistances();
+  void ComputeStrideDistances(const std::vector<char>& usable, const std::vector<float>& friction);
+  double ChainDistance(const LatticeFoot& foot, int goal_side) const {
+    return chain_distance_[goal_side][static_cast<std::size_t>(foot.iy) * lattice_cols_ + foot.ix];
+  }
+  double Yaw(int itheta) const;
+  // Signed difference b - a of two yaw bins, in bins within [-D/2, D/2).
+  int BinDelta(int a, int b) const {
+    const int d = options_.orientations;
+    return ((b - a) % d + d + d / 2) % d - d / 2;
+  }
+
+  const TerrainMap& terrain_;
+  const StepCostModel& cost_model_;
+  BipedGeometry geometry_;
+  FootstepPlannerOptions options_;
+  StanceGoal goal_;
+  double min_cost_per_metre_;
+  double min_cost_per_step_;
+  double max_step_length_;
+  int lattice_cols_;
+  int lattice_rows_;
+  bool ignore_friction_{false};
+  std::unordered_map<std::uint32_t, Foothold> footholds_;
+  // Per lattice position, for the left (0) and right (1) goal foothold; filled by ComputeChainDistances().
+  std::vector<double> chain_distance_[2];
+  // Per lattice position: cost of the cheapest relaxed chain of strides of one foot to its goal foothold.
+  std::vector<double> stride_distance_[2];
+  // cos and sin of yaw at half-bin steps: index 2 * itheta (+1 for the half bin after it).
+  std::vector<double> half_bin_cos_;
+  std::vector<double> half_bin_sin_;
+  std::vector<std::pair<Key, double>> successors_;
+  FootstepPlanStatistics rejections_;
+};
+
+}  // namespace cairn::planning

@@ -1,0 +1,143 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <cairn/planning/locomotion/step_cost_model.h>
+#include <cairn/planning/locomotion/transition_optimizer.h>
+#include <cairn/planning/locomotion/walking_model.h>
+#include <cairn/planning/locomotion/walking_objective.h>
+
+namespace cairn::planning {
+
+/// The displacements and friction limits an oracle table covers: the Cartesian product of the axes. Each axis
+/// is strictly increasing; a single value is allowed (that coordinate is then fixed, and lookups must match it
+/// within 1e-9). dy values must be positive (the bound min_cost_per_metre divides by hypot(dx, dy)) and mu
+/// values positive.
+struct OracleGrid {
+  std::vector<double> dx, dy, dz, dtheta, mu;
+
+  /// The default grid for `model`: dx every 5 cm over the reach, dy at the reach ends and every 5 cm between,
+  /// dz every 5 cm over the reach, dtheta at 0, 15 and 30 degrees (the planner's 15-degree yaw bins) clipped to
+  /// the reach, and mu in {0.04, 0.05, 0.06, 0.08, 0.10, 0.12, 0.15, 0.20, 0.30, 0.45, 0.70, 1.00}.
+  static OracleGrid Default(const WalkingModel& model);
+
+  /// Number of displacement cells (product of the four displacement axes).
+  std::size_t num_displacements() const { return dx.size() * dy.size() * dz.size() * dtheta.size(); }
+  /// Number of entries (displacements times mu values).
+  std::size_t num_entries() const { return num_displacements() * mu.size(); }
+
+  /// Throws std::invalid_argument naming the axis and the bad value if an axis is empty, not strictly
+  /// increasing, non-finite, outside `reach` (mu: not positive), or dy is not positive.
+  void Validate(const StepReach& reach) const;
+};
+
+bool operator==(const OracleGrid& a, const OracleGrid& b);
+inline bool operator!=(const OracleGrid& a, const OracleGrid& b) { return !(a == b); }
+
+/// How an oracle table is built.
+struct OracleBuildOptions {
+  /// Worker threads; 0 means std::thread::hardware_concurrency(). The table does not depend on it.
+  int num_threads{0};
+  /// Called from the building thread's workers, serialised, as (entries done, entries total); for a progress bar.
+  std::function<void(std::size_t done, std::size_t total)> progress;
+  /// Settings of each OptimizeTransition.
+  TransitionOptimizerOptions optimizer;
+};
+
+/// Precomputed minimum-cost transitions (thesis 2.4.1: "pre-computed versions of (2.4) for speed") over an
+/// OracleGrid, for one robot and objective: a StepCostModel answering in microseconds.
+///
+/// Building: every displacement cell solves OptimizeTransition for its mu values from the largest down (the
+/// largest with DIRECT + SLSQP). A solution whose RCOF is within the next smaller mu is reused (it is optimal
+/// there too); otherwise SLSQP is warm-started from it, falling back to DIRECT + SLSQP if that fails; a cell
+/// infeasible at some mu is infeasible at every smaller one. A final pass keeps the cost non-increasing in mu
+/// (a solution feasible at a smaller mu is feasible at every larger one).
+///
+/// Lookup (Evaluate): mu is FLOORED to the largest grid value <= mu_allowed (conservative: below the smallest
+/// value the step is infeasible); the displacement is interpolated multilinearly over the 16 corners of its
+/// (dx, dy, dz, dtheta) cell. The step is infeasible if it lies outside the grid box or any corner with a
+/// non-zero weight is infeasible; otherwise every TransitionCost field is the same weighted mean of the
+/// corners' (RCOF stays <= mu_allowed, as each corner's does). The parameters are therefore interpolated too:
+/// refine them with OptimizeTransition(warm_start) when the exact optimum matters.
+///
+/// min_cost_per_metre() is the minimum over feasible entries of cost / hypot(dx, dy). Multilinear weights
+/// reproduce (dx, dy) exactly and hypot is convex, so an interpolated cost over its hypot is at least the
+/// smallest corner ratio: the bound holds for every lookup.
+///
+/// File format: a text header (magic "cairn-transition-oracle 1", robot name, model content hash, objective,
+/// the grid, payload size and its FNV-1a 64 checksum) followed by the binary payload (little-endian doubles,
+/// 9 per entry); written atomically.
+class TransitionOracle final : public StepCostModel {
+ public:
+  /// One stored entry.
+  using Entry = TransitionCost;
+
+  /// Builds the table (see class comment). Throws std::invalid_argument for a bad grid.
+  static TransitionOracle Build(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
+                                const OracleBuildOptions& options = OracleBuildOptions());
+
+  /// Reads a table written by Save and checks it against `model` (robot name and content hash), `objective` and
+  /// `grid`. Throws std::runtime_error whose message names the file and says what differs or that it is
+  /// corrupt (bad magic, truncated, checksum mismatch).
+  static TransitionOracle Load(const std::string& path, const WalkingModel& model, WalkingObjective objective,
+                               const OracleGrid& grid);
+
+  /// Load, or Build and Save when the file is missing, stale or corrupt; writes one line saying which (and
+  /// why it rebuilt) to `log` if not null.
+  static TransitionOracle LoadOrBuild(const std::string& path, const WalkingModel& model, WalkingObjective objective,
+                                      const OracleGrid& grid, const OracleBuildOptions& options,
+                                      std::ostream* log);
+
+  /// Writes the table atomically (cairn::WriteFileAtomically). Throws std::runtime_error on I/O failure.
+  void Save(const std::string& path) const;
+  /// The file contents Save writes.
+  std::string Serialize() const;
+
+  const OracleGrid& grid() const { return grid_; }
+  WalkingObjective objective() const { return objective_; }
+  const std::string& robot_name() const { return robot_name_; }
+  std::uint64_t model_hash() const { return model_hash_; }
+  std::size_t num_entries() const { return entries_.size(); }
+  /// Entry at grid indices (dx, dy, dz, dtheta, mu).
+  const Entry& entry(std::size_t i_dx, std::size_t i_dy, std::size_t i_dz, std::size_t i_dtheta,
+                     std::size_t i_mu) const;
+  /// All entries, mu fastest, then dtheta, dz, dy, dx.
+  const std::vector<Entry>& entries() const { return entries_; }
+  /// Number of feasible entries.
+  std::size_t num_feasible() const;
+  /// Wall time of Build, s (0 for a loaded table).
+  double build_seconds() const { return build_seconds_; }
+
+ private:
+  TransitionOracle() = default;
+  TransitionCost DoEvaluate(const StepDisplacement& d, double mu_allowed) const override;
+  double do_min_cost_per_metre() const override { return min_cost_per_metre_; }
+  double do_min_cost_per_step() const override { return min_cost_per_step_; }
+  StepCostLowerBound do_cost_lower_bound(double mu_allowed) const override;
+  StrideCostLowerBound do_stride_cost_lower_bound(double mu_allowed) const override;
+  void ComputeStrideBounds();
+  const StepReach& do_reach() const override { return reach_; }
+  std::string do_description() const override;
+  void Finalize();
+
+  OracleGrid grid_;
+  WalkingObjective objective_{WalkingObjective::kComWorkPlusHeat};
+  std::string robot_name_;
+  std::uint64_t model_hash_{0};
+  StepReach reach_;
+  std::vector<Entry> entries_;
+  double min_cost_per_step_{0.0};
+  // Per mu value of the grid: the line bound over that level's feasible entries (see Finalize()).
+  std::vector<StepCostLowerBound> level_bounds_;
+  // Per mu value of the grid: the stride bound over pairs of that level's feasible entries.
+  std::vector<StrideCostLowerBound> stride_bounds_;
+  double min_cost_per_metre_{0.0};
+  double build_seconds_{0.0};
+};
+
+}  // namespace cairn::planning
