@@ -348,14 +348,30 @@ void StanceGraph::ComputeChainDistances() {
     if (it == bounds.end()) it = bounds.emplace(mu, cost_model_.cost_lower_bound(ignore_friction_ ? kUnlimitedFriction : mu)).first;
     return it->second;
   };
+  RelaxedDistances(usable, max_step_length_,
+                   [&](std::size_t i, std::size_t j, const Eigen::Vector2d& pi, const Eigen::Vector2d& pj, double length) {
+                     const StepCostLowerBound& b = bound_at(std::min(friction[i], friction[j]));
+                     if (!b.any_feasible) return std::numeric_limits<double>::infinity();
+                     if (has_obstacles && midpoint_blocked(0.5 * (pi + pj), std::max(ground[i], ground[j]))) {
+                       return std::numeric_limits<double>::infinity();
+                     }
+                     return b.per_step + b.per_metre * length;
+                   },
+                   chain_distance_);
+}
+
+template <class LinkCost>
+void StanceGraph::RelaxedDistances(const std::vector<char>& usable, double max_link, LinkCost&& link_cost,
+                                   std::vector<double> distances[2]) const {
+  const std::size_t n = usable.size();
   const double res = options_.lattice_resolution;
-  const int radius = static_cast<int>(std::floor(max_step_length_ / res + 1e-9));
+  const int radius = static_cast<int>(std::floor(max_link / res + 1e-9));
   std::vector<std::pair<int, int>> offsets;
   std::vector<double> lengths;
   for (int dy = -radius; dy <= radius; ++dy) {
     for (int dx = -radius; dx <= radius; ++dx) {
       const double length = res * std::hypot(dx, dy);
-      if ((dx != 0 || dy != 0) && length <= max_step_length_ + 1e-9) {
+      if ((dx != 0 || dy != 0) && length <= max_link + 1e-9) {
         offsets.emplace_back(dx, dy);
         lengths.push_back(length);
       }
@@ -363,7 +379,7 @@ void StanceGraph::ComputeChainDistances() {
   }
   const FootPose* goals[2] = {&goal_.stance.left, &goal_.stance.right};
   for (int side = 0; side < 2; ++side) {
-    std::vector<double>& dist = chain_distance_[side];
+    std::vector<double>& dist = distances[side];
     dist.assign(n, std::numeric_limits<double>::infinity());
     using Item = std::pair<double, std::size_t>;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
@@ -382,21 +398,17 @@ void StanceGraph::ComputeChainDistances() {
       queue.pop();
       if (d > dist[i]) continue;
       const int ix = static_cast<int>(i % lattice_cols_), iy = static_cast<int>(i / lattice_cols_);
+      const Eigen::Vector2d pi = Position(LatticeFoot{ix, iy, 0});
       for (std::size_t k = 0; k < offsets.size(); ++k) {
         const int jx = ix + offsets[k].first, jy = iy + offsets[k].second;
         if (jx < 0 || jy < 0 || jx >= lattice_cols_ || jy >= lattice_rows_) continue;
         const std::size_t j = static_cast<std::size_t>(jy) * lattice_cols_ + jx;
-        if (!usable[j]) continue;
-        const StepCostLowerBound& b = bound_at(std::min(friction[i], friction[j]));
-        if (!b.any_feasible) continue;
-        const double candidate = d + b.per_step + b.per_metre * lengths[k];
-        if (candidate >= dist[j]) continue;
-        if (has_obstacles && midpoint_blocked(0.5 * (Position(LatticeFoot{ix, iy, 0}) + Position(LatticeFoot{jx, jy, 0})),
-                                              std::max(ground[i], ground[j]))) {
-          continue;
+        if (!usable[j] || d >= dist[j]) continue;
+        const double candidate = d + link_cost(i, j, pi, Position(LatticeFoot{jx, jy, 0}), lengths[k]);
+        if (candidate < dist[j]) {
+          dist[j] = candidate;
+          queue.emplace(candidate, j);
         }
-        dist[j] = candidate;
-        queue.emplace(candidate, j);
       }
     }
   }
@@ -404,8 +416,9 @@ void StanceGraph::ComputeChainDistances() {
 
 void StanceGraph::ComputeStrideDistances(const std::vector<char>& usable, const std::vector<float>& friction) {
   const std::size_t n = usable.size();
-  // A stride from p to q is two steps whose three feet include p and q, so both use at most the friction of the
-  // poorer of the two (each position's best orientation); one bound per friction value met.
+  // A stride of this foot from p to q is two steps: the other foot lands beside p, then this foot lands at q
+  // beside it. Both steps have p among their feet, so both use at most the friction at p (its best orientation);
+  // the search runs from the goal backwards, so the link j -> i of the relaxation is the stride from p = j.
   std::unordered_map<float, StrideCostLowerBound> bounds;
   double longest = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -414,65 +427,15 @@ void StanceGraph::ComputeStrideDistances(const std::vector<char>& usable, const 
     if (b.any_feasible && !b.stride.empty()) longest = std::max(longest, b.stride.back());
     bounds.emplace(friction[i], std::move(b));
   }
-  const double res = options_.lattice_resolution;
-  const int radius = static_cast<int>(std::floor(longest / res + 1e-9));
-  std::vector<std::pair<int, int>> offsets;
-  std::vector<double> lengths;
-  for (int dy = -radius; dy <= radius; ++dy) {
-    for (int dx = -radius; dx <= radius; ++dx) {
-      const double length = res * std::hypot(dx, dy);
-      if ((dx != 0 || dy != 0) && length <= longest + 1e-9) {
-        offsets.emplace_back(dx, dy);
-        lengths.push_back(length);
-      }
-    }
-  }
-  // Link costs per friction value and offset, computed on first use.
-  std::unordered_map<float, std::vector<double>> link_costs;
-  auto links_for = [&](float mu) -> const std::vector<double>& {
-    auto it = link_costs.find(mu);
-    if (it == link_costs.end()) {
-      const StrideCostLowerBound& b = bounds.at(mu);
-      std::vector<double> costs(offsets.size());
-      for (std::size_t k = 0; k < offsets.size(); ++k) costs[k] = b(lengths[k]);
-      it = link_costs.emplace(mu, std::move(costs)).first;
-    }
-    return it->second;
-  };
-  const FootPose* goals[2] = {&goal_.stance.left, &goal_.stance.right};
-  for (int side = 0; side < 2; ++side) {
-    std::vector<double>& dist = stride_distance_[side];
-    dist.assign(n, std::numeric_limits<double>::infinity());
-    using Item = std::pair<double, std::size_t>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-    for (int iy = 0; iy < lattice_rows_; ++iy) {
-      for (int ix = 0; ix < lattice_cols_; ++ix) {
-        const std::size_t i = static_cast<std::size_t>(iy) * lattice_cols_ + ix;
-        const Eigen::Vector2d p = Position(LatticeFoot{ix, iy, 0});
-        if (usable[i] && std::hypot(p.x() - goals[side]->x, p.y() - goals[side]->y) <= goal_.position_tolerance) {
-          dist[i] = 0.0;
-          queue.emplace(0.0, i);
-        }
-      }
-    }
-    while (!queue.empty()) {
-      const auto [d, i] = queue.top();
-      queue.pop();
-      if (d > dist[i]) continue;
-      const int ix = static_cast<int>(i % lattice_cols_), iy = static_cast<int>(i / lattice_cols_);
-      for (std::size_t k = 0; k < offsets.size(); ++k) {
-        const int jx = ix + offsets[k].first, jy = iy + offsets[k].second;
-        if (jx < 0 || jy < 0 || jx >= lattice_cols_ || jy >= lattice_rows_) continue;
-        const std::size_t j = static_cast<std::size_t>(jy) * lattice_cols_ + jx;
-        if (!usable[j]) continue;
-        const double candidate = d + links_for(std::min(friction[i], friction[j]))[k];
-        if (candidate < dist[j]) {
-          dist[j] = candidate;
-          queue.emplace(candidate, j);
-        }
-      }
-    }
-  }
+  // Link costs per friction value and link length, computed on first use.
+  std::unordered_map<float, StrideCostLowerBound>::const_iterator last = bounds.end();
+  RelaxedDistances(usable, longest,
+                   [&](std::size_t /*i*/, std::size_t j, const Eigen::Vector2d&, const Eigen::Vector2d&, double length) {
+                     const float mu = friction[j];
+                     if (last == bounds.end() || last->first != mu) last = bounds.find(mu);
+                     return last->second(length);
+                   },
+                   stride_distance_);
 }
 
 double StanceGraph::ChainDistanceToGoal(const LatticeFoot& foot, FootSide side) {

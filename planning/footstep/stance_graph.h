@@ -104,6 +104,11 @@ class StanceGraph {
   Eigen::Vector2d Position(const LatticeFoot& foot) const;
   void ComputeChainDistances();
   void ComputeStrideDistances(const std::vector<char>& usable, const std::vector<float>& friction);
+  // Dijkstra from each goal foothold over usable lattice positions, with links up to `max_link` long costing
+  // link_cost(i, j, p_i, p_j, length) (infinity: no link).
+  template <class LinkCost>
+  void RelaxedDistances(const std::vector<char>& usable, double max_link, LinkCost&& link_cost,
+                        std::vector<double> distances[2]) const;
   double ChainDistance(const LatticeFoot& foot, int goal_side) const {
     return chain_distance_[goal_side][static_cast<std::size_t>(foot.iy) * lattice_cols_ + foot.ix];
   }

@@ -11,6 +11,7 @@
 
 #include <cairn/planning/footstep/footstep_scenario.h>
 #include <cairn/planning/footstep/plan_footsteps.h>
+#include <cairn/planning/footstep/stance_graph.h>
 
 #include "../support/shared_oracle.h"
 
@@ -86,6 +87,23 @@ TEST(ThesisScenariosTest, NarrowIceAtPoint12IsCrossedSlowly) {
   EXPECT_GT(MeanDuration(plan, true), MeanDuration(plan, false)) << "steps on ice should be slower";
   EXPECT_LE(plan.max_rcof, 1.0);
   for (const PlannedStep& step : plan.steps) EXPECT_LE(step.transition.rcof, step.mu_allowed + 1e-9);
+  // The heuristic, built from the oracle's step and stride bounds, never overestimates along the optimal plan.
+  {
+    const FootstepScenario scenario = FootstepScenario::Load(kScenarios + "ice_narrow_012.yaml");
+    const TerrainMap terrain = scenario.BuildTerrain();
+    StanceGraph graph(terrain, *test::SharedOracle(WalkingObjective::kComWorkPlusHeat),
+                      GeometryOf(*test::SharedWalkingModel()), scenario.planner(), scenario.goal());
+    double to_go = plan.cost;
+    for (int k = 0; k < static_cast<int>(plan.steps.size()); ++k) {
+      to_go -= plan.steps[k].transition.cost;
+      const Stance s = plan.StanceAfter(k);
+      StanceGraph::LatticeFoot left, right;
+      ASSERT_TRUE(graph.Snap(s.left, &left) && graph.Snap(s.right, &right));
+      const StanceGraph::Key key = plan.steps[k].side == FootSide::kLeft ? graph.MakeKey(right, left, FootSide::kLeft)
+                                                                         : graph.MakeKey(left, right, FootSide::kRight);
+      EXPECT_LE(graph.Heuristic(key), to_go + 1e-6) << "after step " << k;
+    }
+  }
   const FootstepPlan detour = PlanScenario("ice_narrow_012", ForbidIce);
   ASSERT_TRUE(detour.found) << detour.reason;
   EXPECT_GT(detour.cost, plan.cost) << "the forced detour must cost more";
