@@ -123,36 +123,58 @@ void OccupancyGrid::Traverse(const Eigen::Vector3d& origin, const Eigen::Vector3
   }
   if (!(t0 < t1)) return;
   const Eigen::Vector3d start = origin + t0 * direction;
-  int cell[3];
-  int step[3];
+  // Per axis: the t of the next boundary, the t between boundaries, the linear-index stride of a step and the
+  // steps left before the ray leaves the grid. Which axis steps next changes irregularly along a ray, so the walk
+  // chooses it with selects on registers rather than branches: a mispredicted branch per cell used to cost more
+  // than the rest of the step.
   double t_max[3];
   double t_delta[3];
+  std::ptrdiff_t stride[3];
+  std::ptrdiff_t steps_left[3];
+  std::ptrdiff_t index = 0;
+  const std::ptrdiff_t axis_stride[3] = {1, dims_.x(), static_cast<std::ptrdiff_t>(dims_.x()) * dims_.y()};
   for (int a = 0; a < 3; ++a) {
-    cell[a] = std::min(dims_[a] - 1, std::max(0, static_cast<int>((start[a] - min_corner_[a]) / resolution_)));
+    const int cell = std::min(dims_[a] - 1, std::max(0, static_cast<int>((start[a] - min_corner_[a]) / resolution_)));
+    index += cell * axis_stride[a];
     if (direction[a] > 0.0) {
-      step[a] = 1;
-      t_max[a] = (min_corner_[a] + (cell[a] + 1) * resolution_ - origin[a]) / direction[a];
+      stride[a] = axis_stride[a];
+      steps_left[a] = dims_[a] - 1 - cell;
+      t_max[a] = (min_corner_[a] + (cell + 1) * resolution_ - origin[a]) / direction[a];
       t_delta[a] = resolution_ / direction[a];
     } else if (direction[a] < 0.0) {
-      step[a] = -1;
-      t_max[a] = (min_corner_[a] + cell[a] * resolution_ - origin[a]) / direction[a];
+      stride[a] = -axis_stride[a];
+      steps_left[a] = cell;
+      t_max[a] = (min_corner_[a] + cell * resolution_ - origin[a]) / direction[a];
       t_delta[a] = -resolution_ / direction[a];
     } else {
-      step[a] = 0;
+      stride[a] = 0;
+      steps_left[a] = std::numeric_limits<std::ptrdiff_t>::max();
       t_max[a] = std::numeric_limits<double>::infinity();
       t_delta[a] = std::numeric_limits<double>::infinity();
     }
   }
+  double tx = t_max[0], ty = t_max[1], tz = t_max[2];
+  std::ptrdiff_t nx = steps_left[0], ny = steps_left[1], nz = steps_left[2];
   double t = t0;
   while (t < t1) {
-    const int a = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
-    const double t_exit = std::min(t_max[a], t1);
-    const std::size_t index = (static_cast<std::size_t>(cell[2]) * dims_.y() + cell[1]) * dims_.x() + cell[0];
-    if (t_exit > t && !visit(index, t, t_exit)) return;
+    // The axis whose boundary comes first; ties go to the later axis (y over x, z over both).
+    const bool x_first = tx < ty;
+    const double t_xy = x_first ? tx : ty;
+    const bool xy_first = t_xy < tz;
+    const double t_exit = std::min(xy_first ? t_xy : tz, t1);
+    if (t_exit > t && !visit(static_cast<std::size_t>(index), t, t_exit)) return;
     t = t_exit;
-    cell[a] += step[a];
-    if (cell[a] < 0 || cell[a] >= dims_[a]) return;
-    t_max[a] += t_delta[a];
+    const bool step_x = x_first && xy_first;
+    const bool step_y = !x_first && xy_first;
+    const bool step_z = !xy_first;
+    tx += step_x ? t_delta[0] : 0.0;
+    ty += step_y ? t_delta[1] : 0.0;
+    tz += step_z ? t_delta[2] : 0.0;
+    index += step_x ? stride[0] : (step_y ? stride[1] : stride[2]);
+    nx -= step_x;
+    ny -= step_y;
+    nz -= step_z;
+    if ((nx | ny | nz) < 0) return;  // left the grid
   }
 }
 

@@ -1,6 +1,7 @@
 #include "cairn/perception/stereo/compute_cost_volume.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -10,18 +11,12 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cairn/common/cairn_assert.h"
+#include "cairn/perception/internal/multiversion.h"
 #include "cairn/perception/internal/parallel_rows.h"
+#include "cairn/perception/internal/winner_take_all_row.h"
 
 namespace cairn::perception {
 namespace {
-
-// The hot kernels are compiled twice (AVX2 and baseline x86-64) and picked at load time, so a generic build
-// still uses the wide registers of the machine it runs on.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define CAIRN_MULTIVERSION __attribute__((target_clones("avx2", "default")))
-#else
-#define CAIRN_MULTIVERSION
-#endif
 
 // Per-row inputs of the pixel cost, in "doubled" integer units for BTSAD so that Birchfield-Tomasi's
 // half-pixel interpolations stay integers: value = 2 I, min/max over {2 I(x), I(x) + I(x-1), I(x) + I(x+1)}.
@@ -66,22 +61,28 @@ void FillRow(const uint8_t* left, const uint8_t* right, int width, int dmin, int
   }
 }
 
-// Pixel costs e(x, k) of one image row, k contiguous.
+// The vertical running sum: for every (x, k) of one image row, the pixel cost e(x, k) (k contiguous) replaces
+// the cost of the row leaving the window, held in `slot`: colsum += e - slot; slot = e. Computing e in the same
+// pass avoids writing and re-reading a separate row of fresh costs.
 CAIRN_MULTIVERSION
-void PixelCostsSsd(const RowSignals& s, int width, int num_disp, int32_t* e) {
+void SlidePixelCostsSsd(const RowSignals& s, int width, int num_disp, int32_t* colsum, int32_t* slot) {
   for (int x = 0; x < width; ++x) {
     const int32_t l = s.left[x];
     const int32_t* r = s.right.data() + (width - 1 - x);
-    int32_t* out = e + static_cast<std::size_t>(x) * num_disp;
+    const std::size_t offset = static_cast<std::size_t>(x) * num_disp;
+    int32_t* sum = colsum + offset;
+    int32_t* old = slot + offset;
     for (int k = 0; k < num_disp; ++k) {
       const int32_t diff = l - r[k];
-      out[k] = diff * diff;
+      const int32_t e = diff * diff;
+      sum[k] += e - old[k];
+      old[k] = e;
     }
   }
 }
 
 CAIRN_MULTIVERSION
-void PixelCostsBt(const RowSignals& s, int width, int num_disp, int32_t* e) {
+void SlidePixelCostsBt(const RowSignals& s, int width, int num_disp, int32_t* colsum, int32_t* slot) {
   for (int x = 0; x < width; ++x) {
     const int32_t l = s.left[x];
     const int32_t lmin = s.left_min[x];
@@ -90,27 +91,17 @@ void PixelCostsBt(const RowSignals& s, int width, int num_disp, int32_t* e) {
     const int32_t* r = s.right.data() + base;
     const int32_t* rmin = s.right_min.data() + base;
     const int32_t* rmax = s.right_max.data() + base;
-    int32_t* out = e + static_cast<std::size_t>(x) * num_disp;
+    const std::size_t offset = static_cast<std::size_t>(x) * num_disp;
+    int32_t* sum = colsum + offset;
+    int32_t* old = slot + offset;
     for (int k = 0; k < num_disp; ++k) {
       const int32_t left_to_right = std::max(std::max(0, l - rmax[k]), rmin[k] - l);
       const int32_t right_to_left = std::max(std::max(0, r[k] - lmax), lmin - r[k]);
-      out[k] = std::min(left_to_right, right_to_left);
+      const int32_t e = std::min(left_to_right, right_to_left);
+      sum[k] += e - old[k];
+      old[k] = e;
     }
   }
-}
-
-// colsum += fresh - stale; stale <- fresh (the ring slot now holds the new row).
-CAIRN_MULTIVERSION
-void SlideColumns(std::size_t n, int32_t* colsum, int32_t* slot, const int32_t* fresh) {
-  for (std::size_t i = 0; i < n; ++i) {
-    colsum[i] += fresh[i] - slot[i];
-    slot[i] = fresh[i];
-  }
-}
-
-CAIRN_MULTIVERSION
-void AddInto(std::size_t n, int32_t* acc, const int32_t* add) {
-  for (std::size_t i = 0; i < n; ++i) acc[i] += add[i];
 }
 
 // One output row: horizontal running sum over the column sums, scaled to float.
@@ -171,16 +162,22 @@ cv::Mat SobelPrefilter(const cv::Mat& gray, int size, int cap) {
     const float* in = dx.ptr<float>(y);
     uint8_t* o = out.ptr<uint8_t>(y);
     for (int x = 0; x < gray.cols; ++x) {
+      // std::lround (half away from zero) without the library call: |v| + 0.5 is exact in double for |v| <= 63.
       const float v = std::clamp(in[x], static_cast<float>(-cap), static_cast<float>(cap));
-      o[x] = static_cast<uint8_t>(std::lround(v) + cap);
+      const int magnitude = static_cast<int>(std::abs(static_cast<double>(v)) + 0.5);
+      o[x] = static_cast<uint8_t>((v < 0.0f ? -magnitude : magnitude) + cap);
     }
   }
   return out;
 }
 
-void ComputeCostVolume(const cv::Mat& left_image, const cv::Mat& right_image, const CostVolumeOptions& options,
-                       DisparityVolume* costs) {
+namespace {
+
+// ComputeCostVolume(), and ComputeWinnerTakeAll() row by row when `wta` is given.
+void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const CostVolumeOptions& options,
+                    const WtaOptions* wta_options, DisparityVolume* costs, WtaResult* wta) {
   CAIRN_CHECK(costs != nullptr);
+  if (wta != nullptr) internal::ValidateWtaOptions(*wta_options);
   const cv::Mat left_gray = ToGray8(left_image, "left");
   const cv::Mat right_gray = ToGray8(right_image, "right");
   if (left_gray.size() != right_gray.size()) {
@@ -210,6 +207,8 @@ void ComputeCostVolume(const cv::Mat& left_image, const cv::Mat& right_image, co
   const std::size_t row_size = static_cast<std::size_t>(width) * num_disp;
   const int threads = internal::ResolveThreadCount(options.num_threads);
 
+  if (wta != nullptr) internal::AllocateWtaResult(height, width, wta);
+
   internal::ParallelForRows(height, threads, [&](int, int y0, int y1) {
     // Per-band workspace: a ring of `window` pixel-cost rows and their column sums.
     RowSignals signals;
@@ -222,29 +221,25 @@ void ComputeCostVolume(const cv::Mat& left_image, const cv::Mat& right_image, co
       signals.right_min.resize(span);
       signals.right_max.resize(span);
     }
-    std::vector<int32_t> ring(row_size * window);
+    // The ring starts at zero, so sliding the first `window` rows in builds the first column sums.
+    std::vector<int32_t> ring(row_size * window, 0);
     std::vector<int32_t> colsum(row_size, 0);
-    std::vector<int32_t> fresh(row_size);
     std::vector<int32_t> acc(num_disp);
-    auto pixel_costs = [&](int y, int32_t* e) {
+    std::vector<float> right_value(wta != nullptr ? width : 0);
+    std::vector<int32_t> right_index(wta != nullptr ? width : 0);
+    auto slide_in = [&](int y) {
       const int yc = std::clamp(y, 0, height - 1);
       FillRow(left.ptr<uint8_t>(yc), right.ptr<uint8_t>(yc), width, dmin, num_disp, bt, &signals);
+      int32_t* slot = ring.data() + static_cast<std::size_t>(((y % window) + window) % window) * row_size;
       if (bt) {
-        PixelCostsBt(signals, width, num_disp, e);
+        SlidePixelCostsBt(signals, width, num_disp, colsum.data(), slot);
       } else {
-        PixelCostsSsd(signals, width, num_disp, e);
+        SlidePixelCostsSsd(signals, width, num_disp, colsum.data(), slot);
       }
     };
-    auto slot = [&](int y) { return ring.data() + static_cast<std::size_t>(((y % window) + window) % window) * row_size; };
-    for (int y = y0 - radius; y <= y0 + radius; ++y) {
-      pixel_costs(y, slot(y));
-      AddInto(row_size, colsum.data(), slot(y));
-    }
+    for (int y = y0 - radius; y <= y0 + radius; ++y) slide_in(y);
     for (int y = y0; y < y1; ++y) {
-      if (y > y0) {
-        pixel_costs(y + radius, fresh.data());
-        SlideColumns(row_size, colsum.data(), slot(y + radius), fresh.data());
-      }
+      if (y > y0) slide_in(y + radius);
       float* out = costs->mutable_curve(y, 0);
       HorizontalPass(colsum.data(), width, num_disp, radius, scale, acc.data(), out);
       // Disparities whose right column falls outside the image have no match.
@@ -256,8 +251,25 @@ void ComputeCostVolume(const cv::Mat& left_image, const cv::Mat& right_image, co
         for (int k = 0; k < k_lo && k < num_disp; ++k) curve[k] = kInf;
         for (int k = std::max(k_hi + 1, 0); k < num_disp; ++k) curve[k] = kInf;
       }
+      if (wta != nullptr) {
+        internal::WinnerTakeAllRow(out, width, num_disp, dmin, *wta_options, y, right_value.data(),
+                                   right_index.data(), wta);
+      }
     }
   });
+}
+
+}  // namespace
+
+void ComputeCostVolume(const cv::Mat& left, const cv::Mat& right, const CostVolumeOptions& options,
+                       DisparityVolume* costs) {
+  CostVolumeImpl(left, right, options, nullptr, costs, nullptr);
+}
+
+void ComputeCostVolumeAndWinnerTakeAll(const cv::Mat& left, const cv::Mat& right, const CostVolumeOptions& options,
+                                       const WtaOptions& wta_options, DisparityVolume* costs, WtaResult* wta) {
+  CAIRN_CHECK(wta != nullptr);
+  CostVolumeImpl(left, right, options, &wta_options, costs, wta);
 }
 
 }  // namespace cairn::perception

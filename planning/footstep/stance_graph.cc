@@ -213,8 +213,9 @@ bool StanceGraph::EvaluateStep(const LatticeFoot& older, const LatticeFoot& newe
   // The lateral spacing must also hold across the stance's mean heading (the pelvis'): measured only in the stance
   // foot's frame, splayed feet (one turned out, the other in) would stand closer than the legs allow.
   if (bins != 0) {
-    const double yaw_mid = Yaw(newer.itheta) + 0.5 * bins * yaw_step;
-    if (sigma * (-std::sin(yaw_mid) * delta.x() + std::cos(yaw_mid) * delta.y()) < reach.dy_min) return false;
+    const int half_bins = 2 * options_.orientations;
+    const int mid = ((2 * newer.itheta + bins) % half_bins + half_bins) % half_bins;
+    if (sigma * (-half_bin_sin_[mid] * delta.x() + half_bin_cos_[mid] * delta.y()) < reach.dy_min) return false;
   }
   const Foothold& ft = EvaluateFoothold(target);
   if (!ft.supported) {

@@ -1,7 +1,9 @@
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
 
 #include <cmath>
+#include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "expect_throws.h"
 
@@ -32,6 +34,41 @@ TEST(CostCurveSensorModelTest, SinglePixelFollowsTheClosedForm) {
   EXPECT_NEAR(p_at(5.0), 0.6, 1e-4);
 }
 
+// The grid must not depend on how the rows are split across threads (the per-thread sums are integers).
+TEST(CostCurveSensorModelTest, SameGridForAnyThreadCount) {
+  const StereoCalibration calibration{40.0, 40.0, 15.5, 11.5, 0.2};
+  DisparityVolume confidence(24, 32, 1, 16);
+  std::mt19937 rng(5);
+  std::exponential_distribution<float> mass(1.0f);
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 32; ++x) {
+      float* c = confidence.mutable_curve(y, x);
+      float sum = 0.0f;
+      for (int k = 0; k < 16; ++k) sum += (c[k] = mass(rng) * mass(rng));
+      for (int k = 0; k < 16; ++k) c[k] /= sum;
+    }
+  std::vector<float> reference;
+  for (int threads : {1, 2, 3}) {
+    OccupancyGrid grid(Eigen::Vector3d(-4.0, -3.0, 0.0), 0.1, Eigen::Vector3i(80, 60, 90));
+    CostCurveSensorModel::Options options;
+    options.num_threads = threads;
+    const Eigen::Isometry3d X_WC(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()));
+    CostCurveSensorModel(options).Integrate(confidence, calibration, X_WC, &grid);
+    std::vector<float> log_odds(grid.num_cells());
+    int updated = 0;
+    for (std::size_t i = 0; i < grid.num_cells(); ++i) {
+      log_odds[i] = grid.log_odds(i);
+      updated += log_odds[i] != 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(updated, 1000);
+    if (reference.empty()) {
+      reference = log_odds;
+    } else {
+      EXPECT_TRUE(log_odds == reference) << threads << " threads";
+    }
+  }
+}
+
 TEST(CostCurveSensorModelTest, RejectsBadInput) {
   CostCurveSensorModel::Options options;
   options.max_probability = 0.4;
@@ -46,6 +83,11 @@ TEST(CostCurveSensorModelTest, RejectsBadInput) {
   CAIRN_EXPECT_THROWS_WITH(
       CostCurveSensorModel().Integrate(DisparityVolume(2, 2, 1, 5), bad, Eigen::Isometry3d::Identity(), &grid),
       std::invalid_argument, "baseline");
+  options = CostCurveSensorModel::Options{};
+  options.min_probability = 1e-30;
+  CAIRN_EXPECT_THROWS_WITH(CostCurveSensorModel(options).Integrate(DisparityVolume(2, 2, 1, 5), StereoCalibration{},
+                                                                  Eigen::Isometry3d::Identity(), &grid),
+                           std::invalid_argument, "too close to 0 or 1");
 }
 
 }  // namespace

@@ -120,6 +120,46 @@ TEST(ComputeCostVolumeTest, SobelPrefilterIsClippedAndCentred) {
   CAIRN_EXPECT_THROWS_WITH(SobelPrefilter(ramp, 4, 31), std::invalid_argument, "size 4");
 }
 
+// The one-pass cost volume + WTA gives the same bytes as the two calls, for both costs and any thread count.
+TEST(ComputeCostVolumeTest, OnePassWinnerTakeAllMatchesTheTwoCalls) {
+  const cv::Mat left = RandomImage(31, 53, 5);
+  const cv::Mat right = RandomImage(31, 53, 6);
+  auto same = [](const cv::Mat& a, const cv::Mat& b) {
+    return a.size() == b.size() && a.type() == b.type() &&
+           std::equal(a.datastart, a.dataend, b.datastart);  // bytes: NaN and infinity compare too
+  };
+  for (CostFunction cost : {CostFunction::kSsd, CostFunction::kBtSad}) {
+    for (int threads : {1, 3}) {
+      CostVolumeOptions options;
+      options.cost = cost;
+      options.window = 5;
+      options.min_disparity = 1;
+      options.max_disparity = 14;
+      options.num_threads = threads;
+      DisparityVolume separate_costs, fused_costs;
+      WtaResult separate, fused;
+      ComputeCostVolume(left, right, options, &separate_costs);
+      ComputeWinnerTakeAll(separate_costs, WtaOptions{}, &separate);
+      ComputeCostVolumeAndWinnerTakeAll(left, right, options, WtaOptions{}, &fused_costs, &fused);
+      EXPECT_TRUE(fused_costs.data() == separate_costs.data());
+      EXPECT_TRUE(same(fused.disparity, separate.disparity));
+      EXPECT_TRUE(same(fused.best_index, separate.best_index));
+      EXPECT_TRUE(same(fused.best_cost, separate.best_cost));
+      EXPECT_TRUE(same(fused.peak_ratio, separate.peak_ratio));
+      EXPECT_TRUE(same(fused.right_best_index, separate.right_best_index));
+      EXPECT_TRUE(same(fused.lr_consistent, separate.lr_consistent));
+    }
+  }
+  CostVolumeOptions options;
+  options.max_disparity = 14;
+  WtaOptions bad;
+  bad.lr_tolerance = -2;
+  DisparityVolume costs;
+  WtaResult wta;
+  CAIRN_EXPECT_THROWS_WITH(ComputeCostVolumeAndWinnerTakeAll(left, right, options, bad, &costs, &wta),
+                           std::invalid_argument, "lr_tolerance -2");
+}
+
 TEST(ComputeCostVolumeTest, RejectsBadInput) {
   DisparityVolume volume;
   CostVolumeOptions options;

@@ -1,8 +1,11 @@
 #include "cairn/perception/stereo/winner_take_all.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "expect_throws.h"
@@ -55,6 +58,61 @@ TEST(WinnerTakeAllTest, RecoversAShiftAndChecksLeftRight) {
   WtaOptions bad;
   bad.lr_tolerance = -1;
   CAIRN_EXPECT_THROWS_WITH(ComputeWinnerTakeAll(costs, bad, &result), std::invalid_argument, "lr_tolerance -1");
+}
+
+// The vectorised kernel against a plain per-pixel scan: small integer costs (many ties), infinite costs where
+// the right column falls outside the image, every output compared exactly, for 1 and 3 threads.
+TEST(WinnerTakeAllTest, MatchesAPlainScanWithTiesAndInfiniteCosts) {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const int height = 5, width = 37, dmin = 2, dmax = 12, num_disp = dmax - dmin + 1;
+  DisparityVolume costs(height, width, dmin, dmax);
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> value(0, 6);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int k = 0; k < num_disp; ++k) {
+        const int xr = x - (dmin + k);
+        costs.mutable_curve(y, x)[k] = xr < 0 ? kInf : static_cast<float>(value(rng));
+      }
+  for (int threads : {1, 3}) {
+    WtaOptions options;
+    options.num_threads = threads;
+    WtaResult result;
+    ComputeWinnerTakeAll(costs, options, &result);
+    for (int y = 0; y < height; ++y) {
+      std::vector<int> right_best(width, -1);
+      for (int xr = 0; xr < width; ++xr) {
+        float best = kInf;
+        for (int k = 0; k < num_disp; ++k) {
+          const int x = xr + dmin + k;
+          if (x < width && costs.at(y, x, k) < best) {
+            best = costs.at(y, x, k);
+            right_best[xr] = k;
+          }
+        }
+        EXPECT_EQ(result.right_best_index.at<int32_t>(y, xr), right_best[xr]) << "y " << y << " xr " << xr;
+      }
+      for (int x = 0; x < width; ++x) {
+        const float* c = costs.curve(y, x);
+        int best = -1;
+        for (int k = 0; k < num_disp; ++k)
+          if (c[k] < kInf && (best < 0 || c[k] < c[best])) best = k;
+        ASSERT_EQ(result.best_index.at<int32_t>(y, x), best) << "y " << y << " x " << x;
+        if (best < 0) continue;
+        float second = kInf;
+        for (int k = 0; k < num_disp; ++k) {
+          const bool local = (k == 0 || c[k] <= c[k - 1]) && (k == num_disp - 1 || c[k] <= c[k + 1]);
+          if (k != best && local) second = std::min(second, c[k]);
+        }
+        const float ratio = second == kInf ? kInf : c[best] > 0.0f ? second / c[best] : second > 0.0f ? kInf : 1.0f;
+        EXPECT_EQ(result.peak_ratio.at<float>(y, x), ratio) << "y " << y << " x " << x;
+        EXPECT_EQ(result.best_cost.at<float>(y, x), c[best]);
+        const int xr = x - (dmin + best);
+        const bool consistent = xr >= 0 && right_best[xr] >= 0 && std::abs(right_best[xr] - best) <= 1;
+        EXPECT_EQ(result.lr_consistent.at<uint8_t>(y, x) != 0, consistent) << "y " << y << " x " << x;
+      }
+    }
+  }
 }
 
 }  // namespace
