@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cairn/common/text_suggestions.h"
+#include "cairn/perception/friction/internal/material_label_sets.h"
 #include "cairn/perception/friction/material_texture.h"
 
 namespace cairn::perception {
@@ -15,13 +16,7 @@ namespace {
 constexpr double kPi = 3.141592653589793;
 
 int IndexIn(const std::vector<std::string>& labels, const std::string& label, const char* option) {
-  const auto it = std::find(labels.begin(), labels.end(), label);
-  if (it == labels.end()) {
-    throw std::invalid_argument(std::string("StereoMaterialScene: ") + option + " names '" + label +
-                                "', which is not in Options::labels " + QuotedList(labels) +
-                                "; add it to labels or remove it from " + option + ".");
-  }
-  return static_cast<int>(it - labels.begin());
+  return internal::IndexOfLabel(labels, label, "StereoMaterialScene", option);
 }
 
 StereoMaterialScene::Options Completed(StereoMaterialScene::Options o) {
@@ -45,28 +40,7 @@ StereoMaterialScene::Options Completed(StereoMaterialScene::Options o) {
     throw std::invalid_argument("StereoMaterialScene: num_boxes must be >= 0; got " + std::to_string(o.num_boxes) +
                                 ".");
   }
-  if (o.labels.empty()) o.labels = MaterialTexture::SupportedLabels();
-  if (o.labels.size() >= 255) {
-    throw std::invalid_argument("StereoMaterialScene: at most 254 labels fit an 8-bit label image; got " +
-                                std::to_string(o.labels.size()) + ".");
-  }
-  for (const std::string& label : o.labels) MaterialTexture::PatternOf(label);  // Throws for a label without texture.
-  if (o.ground_labels.empty()) {
-    for (const std::string& label : o.labels) {
-      if (label != "sky") o.ground_labels.push_back(label);
-    }
-    if (o.ground_labels.empty()) {
-      throw std::invalid_argument("StereoMaterialScene: Options::labels holds only 'sky'; add ground materials.");
-    }
-  }
-  if (o.box_labels.empty()) {
-    for (const char* label : {"wood", "metal", "marble", "rock", "ceramic", "carpet", "cloth", "paper"}) {
-      if (std::find(o.labels.begin(), o.labels.end(), label) != o.labels.end()) o.box_labels.push_back(label);
-    }
-    if (o.box_labels.empty()) o.box_labels = o.ground_labels;
-  }
-  for (const std::string& label : o.ground_labels) IndexIn(o.labels, label, "ground_labels");
-  for (const std::string& label : o.box_labels) IndexIn(o.labels, label, "box_labels");
+  internal::ResolveMaterialLabelSets("StereoMaterialScene", &o.labels, &o.ground_labels, &o.box_labels);
   return o;
 }
 

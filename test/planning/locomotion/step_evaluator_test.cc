@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/shared_oracle.h"
 #include "expect_throws.h"
 
 namespace cairn::planning {
@@ -11,14 +12,8 @@ namespace {
 
 class StepEvaluatorTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    model_ = new WalkingModel(WalkingModel::Load(std::string(CAIRN_SOURCE_DIR) +
-                                                 "/data/robots/cairn_humanoid_walking.yaml"));
-  }
-  static void TearDownTestSuite() { delete model_; }
-  static WalkingModel* model_;
+  const WalkingModel* model_ = test::SharedWalkingModel().get();
 };
-WalkingModel* StepEvaluatorTest::model_ = nullptr;
 
 TEST_F(StepEvaluatorTest, LevelGroundRcofIsComOffsetOverHeight) {
   StepEvaluator evaluator(*model_);

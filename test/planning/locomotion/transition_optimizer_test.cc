@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/shared_oracle.h"
+
 #include "cairn/planning/locomotion/step_evaluator.h"
 #include "expect_throws.h"
 
@@ -12,14 +14,8 @@ namespace {
 
 class TransitionOptimizerTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    model_ = new WalkingModel(WalkingModel::Load(std::string(CAIRN_SOURCE_DIR) +
-                                                 "/data/robots/cairn_humanoid_walking.yaml"));
-  }
-  static void TearDownTestSuite() { delete model_; }
-  static WalkingModel* model_;
+  const WalkingModel* model_ = test::SharedWalkingModel().get();
 };
-WalkingModel* TransitionOptimizerTest::model_ = nullptr;
 
 TEST_F(TransitionOptimizerTest, RespectsFrictionAndCostFallsWithMu) {
   const StepDisplacement d{0.25, 0.2, 0.0, 0.0};
