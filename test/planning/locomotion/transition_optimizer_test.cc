@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "../support/shared_oracle.h"
-
 #include "cairn/planning/locomotion/step_evaluator.h"
+
+#include "../support/shared_oracle.h"
 #include "expect_throws.h"
 
 namespace cairn::planning {
