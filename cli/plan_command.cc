@@ -153,8 +153,9 @@ int Run(const PlanArguments& args) {
   const std::string json = PlanJson(scenario, plan, objective, refine_ms);
   if (!args.out.empty()) {
     std::filesystem::create_directories(args.out);
-    WriteFileAtomically(args.out + "/plan.json", json + "\n");
+    // The picture first: it is the one that can fail (size), and then neither file is replaced.
     WritePlanImage(args.out + "/plan.png", terrain, plan, scenario.goal(), geometry);
+    WriteFileAtomically(args.out + "/plan.json", json + "\n");
   }
   if (args.json) {
     std::printf("%s\n", json.c_str());

@@ -206,7 +206,8 @@ AraStarResult<typename Graph::Key> AraStar(Graph& graph, const std::vector<typen
       if (n.goal) continue;
       const double g = n.g;
       const std::int32_t parent = top.id;
-      graph.ForEachSuccessor(nodes[parent].key, [&](const Key& key, double cost) {
+      const Key expanded = nodes[parent].key;  // a copy: emitting successors may reallocate `nodes`
+      graph.ForEachSuccessor(expanded, [&](const Key& key, double cost) {
         const std::int32_t id = node_of(key);
         Node& s = nodes[id];
         const double candidate = g + cost;
@@ -232,8 +233,14 @@ AraStarResult<typename Graph::Key> AraStar(Graph& graph, const std::vector<typen
       break;
     }
     if (epsilon <= options.final_epsilon || result.bound <= options.final_epsilon) break;
-    // Next ε: move INCONS into OPEN and re-key everything.
-    epsilon = std::max(options.final_epsilon, std::min(epsilon - options.epsilon_step, result.bound));
+    if (elapsed() > options.time_limit) {
+      result.time_limit_reached = true;
+      break;
+    }
+    // Next ε: move INCONS into OPEN and re-key everything. ε must fall at every pass (a step below the
+    // floating-point resolution of ε would otherwise repeat the same pass forever).
+    const double next = std::max(options.final_epsilon, std::min(epsilon - options.epsilon_step, result.bound));
+    epsilon = next < epsilon ? next : options.final_epsilon;
     ++iteration;
     for (std::int32_t id : incons) {
       nodes[id].in_incons = false;

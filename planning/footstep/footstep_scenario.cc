@@ -22,6 +22,7 @@ std::string Format(double value) {
 
 FootPose ReadFoot(const YamlReader& yaml, const YAML::Node& node, const std::string& key) {
   const Eigen::VectorXd v = yaml.Numbers(node, key, 3);
+  if (!v.allFinite()) throw yaml.Error(node, "'" + key + "' must hold finite numbers [x, y, yaw_deg].");
   FootPose pose;
   pose.x = v[0];
   pose.y = v[1];
@@ -146,8 +147,8 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
   yaml.CheckKeys(terrain, {"min", "max", "resolution", "regions"}, "terrain");
   const Eigen::VectorXd lo = yaml.Numbers(yaml.Require(terrain, "min", "terrain"), "min", 2);
   const Eigen::VectorXd hi = yaml.Numbers(yaml.Require(terrain, "max", "terrain"), "max", 2);
-  if (!(hi[0] > lo[0] && hi[1] > lo[1])) {
-    throw yaml.Error(terrain, "terrain 'max' must exceed 'min' in x and y.");
+  if (!lo.allFinite() || !hi.allFinite() || !(hi[0] > lo[0] && hi[1] > lo[1])) {
+    throw yaml.Error(terrain, "terrain 'max' must exceed 'min' in x and y, both finite.");
   }
   s.min_corner_ = lo;
   s.max_corner_ = hi;
@@ -156,6 +157,13 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
     throw yaml.Error(terrain["resolution"], "terrain resolution must be in (0, 0.25] m so that soles are sampled, got " +
                                                 Format(s.resolution_) + ".");
   }
+  // The raster is allocated before planning: bound it here, where the line can be named.
+  constexpr double kMaxCells = 5e7;
+  const double cells = std::ceil((hi[0] - lo[0]) / s.resolution_) * std::ceil((hi[1] - lo[1]) / s.resolution_);
+  if (!(cells <= kMaxCells)) {
+    throw yaml.Error(terrain, "the terrain needs " + Format(cells) + " cells at resolution " + Format(s.resolution_) +
+                                  " m; at most " + Format(kMaxCells) + " are supported. Crop it or coarsen it.");
+  }
   const YAML::Node regions = yaml.Require(terrain, "regions", "terrain");
   if (!regions.IsSequence() || regions.size() == 0) {
     throw yaml.Error(regions, "terrain 'regions' must be a non-empty list of regions.");
@@ -163,7 +171,7 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
   for (std::size_t k = 0; k < regions.size(); ++k) {
     const YAML::Node r = regions[k];
     std::string where = "region " + std::to_string(k + 1);
-    if (r.IsMap() && r["name"]) where += " ('" + r["name"].as<std::string>() + "')";
+    if (r.IsMap() && r["name"]) where += " ('" + yaml.AsString(r["name"], "name") + "')";
     yaml.CheckKeys(r, {"name", "box", "polygon", "height", "slope", "friction", "material"}, where);
     Region region;
     region.name = yaml.String(r, "name", where, "region " + std::to_string(k + 1));
@@ -246,9 +254,18 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
     o.search.initial_epsilon = yaml.Number(p, "initial_epsilon", "planner", o.search.initial_epsilon);
     o.search.epsilon_step = yaml.Number(p, "epsilon_step", "planner", o.search.epsilon_step);
     o.search.final_epsilon = yaml.Number(p, "final_epsilon", "planner", o.search.final_epsilon);
-    o.search.max_expansions = static_cast<std::int64_t>(yaml.Number(p, "max_expansions", "planner", -1));
+    // Integers are checked as doubles before the cast (NaN, infinity and 1e30 would make it undefined).
+    auto integer = [&](const char* key, double fallback, double lo_value, double hi_value) {
+      const double v = yaml.Number(p, key, "planner", fallback);
+      if (!(v >= lo_value && v <= hi_value) || v != std::floor(v)) {
+        throw yaml.Error(p[key], std::string("planner '") + key + "' must be an integer in [" + Format(lo_value) +
+                                     ", " + Format(hi_value) + "], got " + Format(v) + ".");
+      }
+      return v;
+    };
+    o.search.max_expansions = static_cast<std::int64_t>(integer("max_expansions", -1, -1, 1e15));
     o.lattice_resolution = yaml.Number(p, "lattice", "planner", o.lattice_resolution);
-    o.orientations = static_cast<int>(yaml.Number(p, "orientations", "planner", o.orientations));
+    o.orientations = static_cast<int>(integer("orientations", o.orientations, 1, 32));
     o.max_slope = yaml.Number(p, "max_slope_deg", "planner", o.max_slope / kDeg) * kDeg;
     o.support_tolerance = yaml.Number(p, "support_tolerance", "planner", o.support_tolerance);
     auto check = [&](bool ok, const char* key, const std::string& rule) {
@@ -259,8 +276,7 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
     check(o.search.epsilon_step > 0.0, "epsilon_step", "must be > 0");
     check(o.search.final_epsilon >= 1.0 && o.search.final_epsilon <= o.search.initial_epsilon, "final_epsilon",
           "must be in [1, initial_epsilon]");
-    check(o.lattice_resolution > 0.0, "lattice", "must be a positive length in metres");
-    check(o.orientations >= 1 && o.orientations <= 32, "orientations", "must be in [1, 32]");
+    check(o.lattice_resolution >= 0.01 && o.lattice_resolution <= 0.5, "lattice", "must be in [0.01, 0.5] m");
     check(o.max_slope > 0.0 && o.max_slope < M_PI / 2, "max_slope_deg", "must be in (0, 90)");
     check(o.support_tolerance >= 0.0, "support_tolerance", "must be >= 0");
   } else {

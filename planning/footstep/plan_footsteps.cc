@@ -1,5 +1,6 @@
 #include <cairn/planning/footstep/plan_footsteps.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -42,15 +43,17 @@ std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& st
                      const FootstepPlanStatistics& statistics, const StepCostModel& cost_model) {
   std::ostringstream reason;
   graph.set_ignore_friction(true);
-  if (!std::isfinite(graph.Heuristic(starts[0]))) {
+  if (std::none_of(starts.begin(), starts.end(), [&](StanceGraph::Key k) { return std::isfinite(graph.Heuristic(k)); })) {
+    const StepReach& r = cost_model.reach();
     reason << "the goal is unreachable: no chain of supported footholds, each within one step ("
-           << std::setprecision(3) << std::hypot(cost_model.reach().dx_max, cost_model.reach().dy_max)
+           << std::setprecision(3)
+           << std::hypot(std::max(std::abs(r.dx_min), std::abs(r.dx_max)), std::max(std::abs(r.dy_min), std::abs(r.dy_max)))
            << " m) of the last and clear of obstacles, connects the start to the goal";
     return reason.str();
   }
   AraStarOptions relaxed = options.search;
   relaxed.initial_epsilon = std::max(relaxed.initial_epsilon, 3.0);
-  relaxed.epsilon_step = 1e9;  // the first plan answers the question
+  relaxed.final_epsilon = relaxed.initial_epsilon;  // the first plan answers the question
   const AraStarResult<StanceGraph::Key> frictionless = AraStar(graph, starts, relaxed);
   if (frictionless.found) {
     double needed = 0.0;

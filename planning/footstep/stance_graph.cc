@@ -40,7 +40,7 @@ StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_mo
                          const FootstepPlannerOptions& options, const StanceGoal& goal)
     : terrain_(terrain), cost_model_(cost_model), geometry_(geometry), options_(options), goal_(goal) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("StanceGraph: " + what); };
-  if (!(options.lattice_resolution > 0.0)) {
+  if (!(options.lattice_resolution > 0.0) || !std::isfinite(options.lattice_resolution)) {
     fail("lattice_resolution must be a positive length, got " + std::to_string(options.lattice_resolution));
   }
   if (options.orientations < 1 || options.orientations > (1 << kYawBits)) {
@@ -59,15 +59,27 @@ StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_mo
     fail("goal tolerances must be >= 0");
   }
   const Eigen::Vector2d extent = terrain.max_corner() - terrain.min_corner();
-  lattice_cols_ = static_cast<int>(std::floor(extent.x() / options.lattice_resolution)) + 1;
-  lattice_rows_ = static_cast<int>(std::floor(extent.y() / options.lattice_resolution)) + 1;
-  if (lattice_cols_ > (1 << kPositionBits) || lattice_rows_ > (1 << kPositionBits)) {
+  // Counted in double first: a tiny resolution must give this message, not an overflowing cast.
+  const double cols = std::floor(extent.x() / options.lattice_resolution) + 1.0;
+  const double rows = std::floor(extent.y() / options.lattice_resolution) + 1.0;
+  if (!(cols <= (1 << kPositionBits) && rows <= (1 << kPositionBits))) {
     std::ostringstream message;
     message << "StanceGraph: the terrain (" << extent.x() << " x " << extent.y() << " m) needs a lattice of "
-            << lattice_cols_ << " x " << lattice_rows_ << " footholds at " << options.lattice_resolution
+            << cols << " x " << rows << " footholds at " << options.lattice_resolution
             << " m; at most 4096 per axis are supported. Crop the terrain or coarsen the lattice.";
     throw std::invalid_argument(message.str());
   }
+  // Every (position, yaw) foothold is evaluated and cached once for the heuristic; bound the memory it takes.
+  constexpr double kMaxFootholds = 2e7;
+  if (cols * rows * options.orientations > kMaxFootholds) {
+    std::ostringstream message;
+    message << "StanceGraph: " << cols << " x " << rows << " lattice positions x " << options.orientations
+            << " yaws are " << cols * rows * options.orientations << " footholds; at most " << kMaxFootholds
+            << " are supported. Crop the terrain to the region around start and goal or coarsen the lattice.";
+    throw std::invalid_argument(message.str());
+  }
+  lattice_cols_ = static_cast<int>(cols);
+  lattice_rows_ = static_cast<int>(rows);
   min_cost_per_metre_ = cost_model.min_cost_per_metre();
   min_cost_per_step_ = cost_model.min_cost_per_step();
   const StepReach& reach = cost_model.reach();

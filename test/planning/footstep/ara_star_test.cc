@@ -145,6 +145,17 @@ TEST(AraStarTest, StopsAtTheFinalEpsilon) {
   EXPECT_GE(result.improvements.back().epsilon, 2.0);
 }
 
+TEST(AraStarTest, TerminatesWhenTheEpsilonStepIsBelowRounding) {
+  GridGraph graph(30, 5, 0.2);
+  AraStarOptions options;
+  options.initial_epsilon = 3.0;
+  options.epsilon_step = 1e-300;
+  const auto result = AraStar(graph, {0}, options);
+  ASSERT_TRUE(result.found);
+  EXPECT_DOUBLE_EQ(result.bound, 1.0);
+  EXPECT_LE(result.improvements.size(), 50u);  // each pass lowers epsilon to at most the proven bound
+}
+
 TEST(AraStarTest, IsDeterministic) {
   GridGraph a(40, 11, 0.2), b(40, 11, 0.2);
   const auto ra = AraStar(a, {0}, AraStarOptions{});

@@ -103,7 +103,18 @@ TEST(FootstepScenarioTest, ErrorsNameTheFileLineAndKey) {
       std::invalid_argument, "line 7", "'left' must be a list of 3 numbers", "[0.2, 0.1]");
   CAIRN_EXPECT_THROWS_WITH(
       FootstepScenario::Load(Scratch("planner.yaml", text + "planner: {orientations: 64}\n")), std::invalid_argument,
-      "line 9", "planner 'orientations' must be in [1, 32]");
+      "line 9", "planner 'orientations' must be an integer in [1, 32], got 64");
+  CAIRN_EXPECT_THROWS_WITH(FootstepScenario::Load(Scratch("lattice.yaml", text + "planner: {lattice: 1e-12}\n")),
+                           std::invalid_argument, "line 9", "planner 'lattice' must be in [0.01, 0.5] m");
+  CAIRN_EXPECT_THROWS_WITH(
+      FootstepScenario::Load(Scratch("inf.yaml", std::string(text).replace(text.find("max: [2, 1]"), 11, "max: [.inf, 1]"))),
+      std::invalid_argument, "terrain 'max' must exceed 'min' in x and y, both finite");
+  CAIRN_EXPECT_THROWS_WITH(
+      FootstepScenario::Load(Scratch("huge.yaml", std::string(text).replace(text.find("max: [2, 1]"), 11, "max: [1e5, 1e5]"))),
+      std::invalid_argument, "at most 5e+07 are supported");
+  CAIRN_EXPECT_THROWS_WITH(
+      FootstepScenario::Load(Scratch("nan.yaml", std::string(text).replace(text.find("[1.5, 0.1, 0]"), 13, "[1.5, 0.1, .nan]"))),
+      std::invalid_argument, "line 8", "'left' must hold finite numbers");
   CAIRN_EXPECT_THROWS_WITH(FootstepScenario::Load(Scratch("broken.yaml", "name: [unclosed\n")), std::invalid_argument,
                            "Malformed YAML in", "broken.yaml");
   CAIRN_EXPECT_THROWS_WITH(FootstepScenario::Load("/nonexistent/scenario.yaml"), std::invalid_argument,
