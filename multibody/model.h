@@ -18,8 +18,9 @@ class ModelBuilder;
 ///
 /// Body 0 is the world. Every other body i has exactly one parent joint, joint i, connecting body parent(i) < i
 /// to body i, so the bodies are in topological order and the algorithms run as single forward/backward sweeps.
-/// joint(0) is a placeholder named "universe". Configurations q (size nq) and velocities v (size nv) stack the
-/// joints' coordinates in body order. Thread-safe to share; each thread uses its own Data.
+/// joint(0) is the fixed world joint named "universe" (as in Pinocchio), with no degrees of freedom.
+/// Configurations q (size nq) and velocities v (size nv) stack the joints' coordinates in body order.
+/// Thread-safe to share; each thread uses its own Data.
 class Model {
  public:
   /// Model name (the URDF robot name).
@@ -34,7 +35,7 @@ class Model {
   int num_frames() const { return static_cast<int>(frames_.size()); }
   /// Body `i` (0 is the world).
   const Body& body(int i) const { return bodies_.at(static_cast<std::size_t>(i)); }
-  /// Joint `i`, the parent joint of body `i` (0 is the "universe" placeholder).
+  /// Joint `i`, the parent joint of body `i` (0 is the fixed "universe" joint of the world).
   const Joint& joint(int i) const { return joints_.at(static_cast<std::size_t>(i)); }
   /// Frame `i`.
   const Frame& frame(int i) const { return frames_.at(static_cast<std::size_t>(i)); }
@@ -86,7 +87,7 @@ class Model {
 
   /// Names of all bodies, in index order.
   std::vector<std::string> body_names() const;
-  /// Names of all joints except the "universe" placeholder, in index order.
+  /// Names of all joints except the fixed "universe" world joint, in index order.
   std::vector<std::string> joint_names() const;
   /// Names of all frames, in index order.
   std::vector<std::string> frame_names() const;

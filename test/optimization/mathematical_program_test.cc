@@ -60,7 +60,7 @@ TEST(MathematicalProgramTest, BoundsInitialGuessAndCost) {
   EXPECT_EQ(prog.least_squares_costs().size(), 1u);
 }
 
-TEST(MathematicalProgramTest, RejectsMistakesWithMessagesThatSayWhatToDo) {
+TEST(MathematicalProgramTest, RejectsMistakesWithMessagesThatSayHowToFixThem) {
   MathematicalProgram prog, other;
   const auto x = prog.NewContinuousVariables(2, "x");
   const auto y = other.NewContinuousVariables(2, "y");
