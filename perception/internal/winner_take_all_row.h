@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cairn/perception/stereo/winner_take_all.h"
 
@@ -28,5 +29,36 @@ void AllocateWtaResult(int height, int width, WtaResult* result);
 /// (allocated by AllocateWtaResult()). `right_value` and `right_index` are scratch of `width` elements each.
 void WinnerTakeAllRow(const float* row, int width, int num_disp, int dmin, const WtaOptions& options, int y,
                       float* right_value, int32_t* right_index, WtaResult* result);
+
+/// True when the CPU can run the AVX2 kernels below (checked once). Callers fall back to the portable kernels
+/// otherwise; both give identical results (winner_take_all_avx2_test).
+bool CpuHasAvx2();
+
+/// Per-thread scratch of the AVX2 kernels, sized for one image width and disparity range by Resize().
+struct WtaRowScratch {
+  void Resize(int width, int num_disp, int dmin);
+
+  int chunks{0};  ///< groups of 8 disparities, the last one padded
+  int shift{0};   ///< offset of the right-view slots, so that a negative min disparity indexes from 0
+  float* curve{nullptr};  ///< 32-byte aligned; curve[-1] and curve[num_disp, 8 chunks) are +infinity
+  std::vector<float> curve_storage;
+  std::vector<float> right_value;   ///< right view: the smallest cost so far per right column (reversed order)
+  std::vector<int32_t> right_index;  ///< and its disparity index
+  std::vector<int32_t> acc;          ///< horizontal running sums of the fused kernel
+};
+
+/// WinnerTakeAllRow() with AVX2: one pass per pixel over its curve, copied into the scratch's padded buffer.
+/// Requires CpuHasAvx2() and a scratch sized for (width, num_disp, dmin).
+void WinnerTakeAllRowAvx2(const float* row, int width, int num_disp, int dmin, const WtaOptions& options, int y,
+                          WtaRowScratch* scratch, WtaResult* result);
+
+/// The last stage of ComputeCostVolumeAndWinnerTakeAll() for image row y with AVX2: the horizontal running sum
+/// of `colsum` (width columns of num_disp vertical window sums) over 2 radius + 1 columns (edges replicated),
+/// times `scale`, +infinity where the right column falls outside the image, written to `costs` (the row's
+/// width x num_disp costs), and each pixel's winner-take-all while its curve is in registers. Same results as the
+/// portable aggregation followed by WinnerTakeAllRow(). Requires CpuHasAvx2() and a sized scratch.
+void AggregateRowAndWinnerTakeAllAvx2(const int32_t* colsum, int width, int num_disp, int dmin, int radius,
+                                      float scale, const WtaOptions& options, int y, WtaRowScratch* scratch,
+                                      float* costs, WtaResult* result);
 
 }  // namespace cairn::perception::internal

@@ -27,14 +27,25 @@ struct RowSignals {
   std::vector<int32_t> right;      // W + D - 1, reversed and edge-replicated (see FillRow()).
   std::vector<int32_t> right_min;  // W + D - 1 (BTSAD only).
   std::vector<int32_t> right_max;  // W + D - 1 (BTSAD only).
+  std::vector<int32_t> right_image, right_image_min, right_image_max;  // W, in image order (scratch)
 };
 
-void BtRange(const uint8_t* row, int width, int x, int32_t* lo, int32_t* hi) {
-  const int32_t c = 2 * row[x];
-  const int32_t l = x > 0 ? row[x] + row[x - 1] : c;
-  const int32_t r = x + 1 < width ? row[x] + row[x + 1] : c;
-  *lo = std::min({c, l, r});
-  *hi = std::max({c, l, r});
+// Birchfield-Tomasi's range of row[x] in doubled units: min and max over {2 I(x), I(x) + I(x-1), I(x) + I(x+1)},
+// the edge pixels standing in for their missing neighbours. Plain loops that the compiler vectorises.
+CAIRN_MULTIVERSION
+void BtRanges(const uint8_t* row, int width, int32_t* doubled, int32_t* lo, int32_t* hi) {
+  for (int x = 0; x < width; ++x) doubled[x] = 2 * row[x];
+  lo[0] = hi[0] = doubled[0];
+  for (int x = 1; x < width; ++x) {  // with the left neighbour
+    const int32_t half_left = row[x] + row[x - 1];
+    lo[x] = std::min(doubled[x], half_left);
+    hi[x] = std::max(doubled[x], half_left);
+  }
+  for (int x = 0; x + 1 < width; ++x) {  // with the right neighbour
+    const int32_t half_right = row[x] + row[x + 1];
+    lo[x] = std::min(lo[x], half_right);
+    hi[x] = std::max(hi[x], half_right);
+  }
 }
 
 // The right-image arrays are stored reversed so that, for a fixed left column x, consecutive disparities read
@@ -42,47 +53,46 @@ void BtRange(const uint8_t* row, int width, int x, int32_t* lo, int32_t* hi) {
 // reads index W - 1 - x + k.
 void FillRow(const uint8_t* left, const uint8_t* right, int width, int dmin, int num_disp, bool bt, RowSignals* s) {
   const int span = width + num_disp - 1;
-  for (int x = 0; x < width; ++x) {
-    if (bt) {
-      s->left[x] = 2 * left[x];
-      BtRange(left, width, x, &s->left_min[x], &s->left_max[x]);
-    } else {
-      s->left[x] = left[x];
-    }
+  if (bt) {
+    BtRanges(left, width, s->left.data(), s->left_min.data(), s->left_max.data());
+    BtRanges(right, width, s->right_image.data(), s->right_image_min.data(), s->right_image_max.data());
+  } else {
+    for (int x = 0; x < width; ++x) s->left[x] = left[x];
+    for (int x = 0; x < width; ++x) s->right_image[x] = right[x];
   }
   for (int i = 0; i < span; ++i) {
     const int xr = std::clamp(width - 1 - dmin - i, 0, width - 1);
+    s->right[i] = s->right_image[xr];
     if (bt) {
-      s->right[i] = 2 * right[xr];
-      BtRange(right, width, xr, &s->right_min[i], &s->right_max[i]);
-    } else {
-      s->right[i] = right[xr];
+      s->right_min[i] = s->right_image_min[xr];
+      s->right_max[i] = s->right_image_max[xr];
     }
   }
 }
 
 // The vertical running sum: for every (x, k) of one image row, the pixel cost e(x, k) (k contiguous) replaces
 // the cost of the row leaving the window, held in `slot`: colsum += e - slot; slot = e. Computing e in the same
-// pass avoids writing and re-reading a separate row of fresh costs.
+// pass avoids writing and re-reading a separate row of fresh costs. A pixel cost fits 16 bits (SSD: 255^2; BTSAD:
+// 510 in doubled units), which halves the ring's memory traffic.
 CAIRN_MULTIVERSION
-void SlidePixelCostsSsd(const RowSignals& s, int width, int num_disp, int32_t* colsum, int32_t* slot) {
+void SlidePixelCostsSsd(const RowSignals& s, int width, int num_disp, int32_t* colsum, uint16_t* slot) {
   for (int x = 0; x < width; ++x) {
     const int32_t l = s.left[x];
     const int32_t* r = s.right.data() + (width - 1 - x);
     const std::size_t offset = static_cast<std::size_t>(x) * num_disp;
     int32_t* sum = colsum + offset;
-    int32_t* old = slot + offset;
+    uint16_t* old = slot + offset;
     for (int k = 0; k < num_disp; ++k) {
       const int32_t diff = l - r[k];
       const int32_t e = diff * diff;
       sum[k] += e - old[k];
-      old[k] = e;
+      old[k] = static_cast<uint16_t>(e);
     }
   }
 }
 
 CAIRN_MULTIVERSION
-void SlidePixelCostsBt(const RowSignals& s, int width, int num_disp, int32_t* colsum, int32_t* slot) {
+void SlidePixelCostsBt(const RowSignals& s, int width, int num_disp, int32_t* colsum, uint16_t* slot) {
   for (int x = 0; x < width; ++x) {
     const int32_t l = s.left[x];
     const int32_t lmin = s.left_min[x];
@@ -93,13 +103,13 @@ void SlidePixelCostsBt(const RowSignals& s, int width, int num_disp, int32_t* co
     const int32_t* rmax = s.right_max.data() + base;
     const std::size_t offset = static_cast<std::size_t>(x) * num_disp;
     int32_t* sum = colsum + offset;
-    int32_t* old = slot + offset;
+    uint16_t* old = slot + offset;
     for (int k = 0; k < num_disp; ++k) {
       const int32_t left_to_right = std::max(std::max(0, l - rmax[k]), rmin[k] - l);
       const int32_t right_to_left = std::max(std::max(0, r[k] - lmax), lmin - r[k]);
       const int32_t e = std::min(left_to_right, right_to_left);
       sum[k] += e - old[k];
-      old[k] = e;
+      old[k] = static_cast<uint16_t>(e);
     }
   }
 }
@@ -208,6 +218,7 @@ void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const
   const int threads = internal::ResolveThreadCount(options.num_threads);
 
   if (wta != nullptr) internal::AllocateWtaResult(height, width, wta);
+  const bool fused_avx2 = wta != nullptr && internal::CpuHasAvx2();
 
   internal::ParallelForRows(height, threads, [&](int, int y0, int y1) {
     // Per-band workspace: a ring of `window` pixel-cost rows and their column sums.
@@ -215,6 +226,9 @@ void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const
     const std::size_t span = static_cast<std::size_t>(width + num_disp - 1);
     signals.left.resize(width);
     signals.right.resize(span);
+    signals.right_image.resize(width);
+    signals.right_image_min.resize(width);
+    signals.right_image_max.resize(width);
     if (bt) {
       signals.left_min.resize(width);
       signals.left_max.resize(width);
@@ -222,7 +236,7 @@ void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const
       signals.right_max.resize(span);
     }
     // The ring starts at zero, so sliding the first `window` rows in builds the first column sums.
-    std::vector<int32_t> ring(row_size * window, 0);
+    std::vector<uint16_t> ring(row_size * window, 0);
     std::vector<int32_t> colsum(row_size, 0);
     std::vector<int32_t> acc(num_disp);
     std::vector<float> right_value(wta != nullptr ? width : 0);
@@ -230,17 +244,24 @@ void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const
     auto slide_in = [&](int y) {
       const int yc = std::clamp(y, 0, height - 1);
       FillRow(left.ptr<uint8_t>(yc), right.ptr<uint8_t>(yc), width, dmin, num_disp, bt, &signals);
-      int32_t* slot = ring.data() + static_cast<std::size_t>(((y % window) + window) % window) * row_size;
+      uint16_t* slot = ring.data() + static_cast<std::size_t>(((y % window) + window) % window) * row_size;
       if (bt) {
         SlidePixelCostsBt(signals, width, num_disp, colsum.data(), slot);
       } else {
         SlidePixelCostsSsd(signals, width, num_disp, colsum.data(), slot);
       }
     };
+    internal::WtaRowScratch scratch;
+    if (fused_avx2) scratch.Resize(width, num_disp, dmin);
     for (int y = y0 - radius; y <= y0 + radius; ++y) slide_in(y);
     for (int y = y0; y < y1; ++y) {
       if (y > y0) slide_in(y + radius);
       float* out = costs->mutable_curve(y, 0);
+      if (fused_avx2) {
+        internal::AggregateRowAndWinnerTakeAllAvx2(colsum.data(), width, num_disp, dmin, radius, scale, *wta_options,
+                                                   y, &scratch, out, wta);
+        continue;
+      }
       HorizontalPass(colsum.data(), width, num_disp, radius, scale, acc.data(), out);
       // Disparities whose right column falls outside the image have no match.
       constexpr float kInf = std::numeric_limits<float>::infinity();

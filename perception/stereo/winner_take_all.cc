@@ -159,12 +159,23 @@ void ComputeWinnerTakeAll(const DisparityVolume& costs, const WtaOptions& option
   const int width = costs.width();
   internal::AllocateWtaResult(height, width, result);
   // Rows are independent; each thread keeps its own right-view scratch row.
+  const int num_disp = costs.num_disparities();
+  const int dmin = costs.min_disparity();
+  const bool avx2 = internal::CpuHasAvx2();
   internal::ParallelForRows(height, internal::ResolveThreadCount(options.num_threads), [&](int, int y0, int y1) {
+    if (avx2) {
+      internal::WtaRowScratch scratch;
+      scratch.Resize(width, num_disp, dmin);
+      for (int y = y0; y < y1; ++y) {
+        internal::WinnerTakeAllRowAvx2(costs.curve(y, 0), width, num_disp, dmin, options, y, &scratch, result);
+      }
+      return;
+    }
     std::vector<float> right_value(width);
     std::vector<int32_t> right_index(width);
     for (int y = y0; y < y1; ++y) {
-      internal::WinnerTakeAllRow(costs.curve(y, 0), width, costs.num_disparities(), costs.min_disparity(), options,
-                                 y, right_value.data(), right_index.data(), result);
+      internal::WinnerTakeAllRow(costs.curve(y, 0), width, num_disp, dmin, options, y, right_value.data(),
+                                 right_index.data(), result);
     }
   });
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "expect_throws.h"
 
@@ -120,7 +122,8 @@ TEST(ComputeCostVolumeTest, SobelPrefilterIsClippedAndCentred) {
   CAIRN_EXPECT_THROWS_WITH(SobelPrefilter(ramp, 4, 31), std::invalid_argument, "size 4");
 }
 
-// The one-pass cost volume + WTA gives the same bytes as the two calls, for both costs and any thread count.
+// The one-pass cost volume + WTA gives the same bytes as the two calls, for both costs, any thread count and
+// disparity ranges that do and do not fill the vector kernels' groups of 8 (negative and single disparities too).
 TEST(ComputeCostVolumeTest, OnePassWinnerTakeAllMatchesTheTwoCalls) {
   const cv::Mat left = RandomImage(31, 53, 5);
   const cv::Mat right = RandomImage(31, 53, 6);
@@ -128,13 +131,17 @@ TEST(ComputeCostVolumeTest, OnePassWinnerTakeAllMatchesTheTwoCalls) {
     return a.size() == b.size() && a.type() == b.type() &&
            std::equal(a.datastart, a.dataend, b.datastart);  // bytes: NaN and infinity compare too
   };
+  const std::pair<int, int> ranges[] = {{1, 14}, {-3, 12}, {0, 7}, {2, 2}, {0, 40}};
   for (CostFunction cost : {CostFunction::kSsd, CostFunction::kBtSad}) {
     for (int threads : {1, 3}) {
+     for (const auto& [dmin, dmax] : ranges) {
+      SCOPED_TRACE("threads " + std::to_string(threads) + " range [" + std::to_string(dmin) + ", " +
+                   std::to_string(dmax) + "]");
       CostVolumeOptions options;
       options.cost = cost;
       options.window = 5;
-      options.min_disparity = 1;
-      options.max_disparity = 14;
+      options.min_disparity = dmin;
+      options.max_disparity = dmax;
       options.num_threads = threads;
       DisparityVolume separate_costs, fused_costs;
       WtaResult separate, fused;
@@ -148,6 +155,7 @@ TEST(ComputeCostVolumeTest, OnePassWinnerTakeAllMatchesTheTwoCalls) {
       EXPECT_TRUE(same(fused.peak_ratio, separate.peak_ratio));
       EXPECT_TRUE(same(fused.right_best_index, separate.right_best_index));
       EXPECT_TRUE(same(fused.lr_consistent, separate.lr_consistent));
+     }
     }
   }
   CostVolumeOptions options;

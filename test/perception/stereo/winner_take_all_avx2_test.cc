@@ -1,0 +1,77 @@
+// The AVX2 winner-take-all row kernel against the portable one, on curves built to stress the vector code: many
+// ties (small integer costs), infinite costs anywhere, disparity counts that do and do not fill groups of 8, and
+// negative disparities.
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cairn/perception/internal/winner_take_all_row.h"
+#include "cairn/perception/stereo/disparity_volume.h"
+
+namespace cairn::perception {
+namespace {
+
+bool SameBytes(const cv::Mat& a, const cv::Mat& b) {
+  return a.size() == b.size() && a.type() == b.type() && std::equal(a.datastart, a.dataend, b.datastart);
+}
+
+TEST(WinnerTakeAllAvx2Test, MatchesThePortableKernelByteForByte) {
+  if (!internal::CpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2; only the portable kernel runs here";
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const int height = 4, width = 45;
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> value(0, 5);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  for (const auto& [dmin, dmax] : {std::pair{2, 12}, std::pair{-4, 11}, std::pair{0, 0}, std::pair{1, 8},
+                                   std::pair{3, 30}, std::pair{-7, 1}}) {
+    for (const bool subpixel : {true, false}) {
+      SCOPED_TRACE("range [" + std::to_string(dmin) + ", " + std::to_string(dmax) + "] subpixel " +
+                   std::to_string(subpixel));
+      const int num_disp = dmax - dmin + 1;
+      DisparityVolume costs(height, width, dmin, dmax);
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+          for (int k = 0; k < num_disp; ++k) {
+            const int xr = x - (dmin + k);
+            const bool outside = xr < 0 || xr >= width;
+            // Mostly ties, some real-valued costs (sub-pixel offsets), some stray infinities inside the image.
+            float c = uniform(rng) < 0.2f ? value(rng) + uniform(rng) : static_cast<float>(value(rng));
+            if (uniform(rng) < 0.05f) c = kInf;
+            costs.mutable_curve(y, x)[k] = outside ? kInf : c;
+          }
+      WtaOptions options;
+      options.subpixel = subpixel;
+      WtaResult portable, vector;
+      internal::AllocateWtaResult(height, width, &portable);
+      internal::AllocateWtaResult(height, width, &vector);
+      std::vector<float> right_value(width);
+      std::vector<int32_t> right_index(width);
+      internal::WtaRowScratch scratch;
+      scratch.Resize(width, num_disp, dmin);
+      for (int y = 0; y < height; ++y) {
+        internal::WinnerTakeAllRow(costs.curve(y, 0), width, num_disp, dmin, options, y, right_value.data(),
+                                   right_index.data(), &portable);
+        internal::WinnerTakeAllRowAvx2(costs.curve(y, 0), width, num_disp, dmin, options, y, &scratch, &vector);
+      }
+      EXPECT_TRUE(SameBytes(vector.disparity, portable.disparity));
+      EXPECT_TRUE(SameBytes(vector.best_index, portable.best_index));
+      EXPECT_TRUE(SameBytes(vector.best_cost, portable.best_cost));
+      EXPECT_TRUE(SameBytes(vector.peak_ratio, portable.peak_ratio));
+      EXPECT_TRUE(SameBytes(vector.right_best_index, portable.right_best_index));
+      EXPECT_TRUE(SameBytes(vector.lr_consistent, portable.lr_consistent));
+      // The test must exercise what it claims: ties, rejected pixels and left-right disagreements all occur.
+      EXPECT_GT(cv::countNonZero(portable.lr_consistent), 0);
+      if (num_disp > 1) {
+        EXPECT_LT(cv::countNonZero(portable.lr_consistent), height * width);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cairn::perception
