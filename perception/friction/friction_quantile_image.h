@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -16,12 +17,15 @@ namespace cairn::perception {
 /// - kExact: label CDFs tabulated on a 1/2048 grid over [0, max_i q_i], where q_i is label i's own (1−η)
 ///   quantile: the mixture quantile never exceeds it, since F(max_i q_i) = Σ_i p_i F_i(max_i q_i) >= Σ_i p_i (1−η).
 ///   The root of the piecewise-linear tabulated CDF is found by Newton steps on the table's cells, safeguarded
-///   by bisection, from the probability-weighted mean of the q_i, and is exact inside its cell (linear
-///   interpolation); confident pixels need two or three cell evaluations. cdf_interpolation_error() reports the table's largest
-///   CDF error (measured at every cell's midpoint).
+///   by bisection, from where the labels' CDFs linearised at their q_i meet the target, and is exact inside its
+///   cell (linear interpolation); confident pixels need two or three cell evaluations. cdf_interpolation_error()
+///   reports the table's largest CDF error (measured at every cell's midpoint).
 /// - kSearch: the thesis' Algorithm 1 with step `tolerance`, on CDFs tabulated at its grid points (exact values).
 /// - kGaussian: the moment approximation.
-/// Rows are split across threads; results do not depend on the thread count.
+/// Rows are split across threads. Each row is read where it lies (no copy) in one pass that validates it and takes
+/// each pixel's sum and the dot products the method starts from; the searches then revisit only their pixels'
+/// table cells. The dot products run on AVX2 when the processor has it, else on portable code that adds in the
+/// same order, so results depend neither on the thread count nor on the processor.
 class FrictionQuantileImage {
  public:
   struct Options {
@@ -39,7 +43,8 @@ class FrictionQuantileImage {
   /// `probabilities`: CV_32FC(number of labels), channels in registry order, each pixel's summing to 1.
   /// Returns CV_32F quantiles of the same size. Throws std::invalid_argument naming the first bad pixel.
   cv::Mat Compute(const cv::Mat& probabilities) const;
-  /// As Compute(), into `quantiles` (reallocated only when its size or type differs).
+  /// As Compute(), into `quantiles` (reallocated only when its size or type differs, or when it shares the
+  /// probabilities' pixels; `quantiles` may be `&probabilities`).
   void Compute(const cv::Mat& probabilities, cv::Mat* quantiles) const;
 
   const Options& options() const { return options_; }
@@ -48,35 +53,45 @@ class FrictionQuantileImage {
   double cdf_interpolation_error() const { return cdf_interpolation_error_; }
 
  private:
-  // 16 floats on a cache line: a table row of up to 16 labels is one line.
+  // Tests switch an image to the portable kernels to compare them with the AVX2 ones.
+  friend class FrictionQuantileImageTester;
+
+  // 16 floats on a cache line: a table row of up to 16 labels (zeros past num_labels_) is one line.
   struct alignas(64) Block {
     float values[16]{};
   };
-  // Per-thread state of ExactQuantilesOfRow(), one entry per pixel still searching.
-  struct Workspace {
-    std::vector<int> active, low, high, cell;
-  };
+  // Per-thread arrays of one row's pixels (defined in the source file).
+  struct Workspace;
 
-  // `padded` holds `cols` pixels of stride_ floats (zeros past num_labels_); `out` receives `cols` quantiles.
-  void ExactQuantilesOfRow(const float* padded, int cols, Workspace* workspace, float* out) const;
-  void SearchQuantilesOfRow(const float* padded, int cols, float* out) const;
-  void GaussianQuantilesOfRow(const float* padded, int cols, float* out) const;
+  // Each reads a validated row of `cols` pixels (num_labels_ floats each) and the workspace's results of the
+  // validation pass (see dot_vectors_), and writes `cols` quantiles to `out`.
+  void ExactQuantilesOfRow(const float* row, int cols, Workspace* workspace, float* out) const;
+  void SearchQuantilesOfRow(const float* row, int cols, Workspace* workspace, float* out) const;
+  void GaussianQuantilesOfRow(int cols, const Workspace& workspace, float* out) const;
+  // The error message naming the first pixel of row `r` whose probabilities leave [0, 1] or do not sum to 1.
+  std::string DescribeFirstBadPixel(const float* row, int r, int cols) const;
   float* TableRow(int point) { return table_[static_cast<std::size_t>(point) * blocks_].values; }
   const float* TableRow(int point) const { return table_[static_cast<std::size_t>(point) * blocks_].values; }
+  float* DotVector(int k) { return dot_vectors_[static_cast<std::size_t>(k) * blocks_].values; }
+  const float* DotVector(int k) const { return dot_vectors_[static_cast<std::size_t>(k) * blocks_].values; }
 
   Options options_;
   int num_labels_;
   float target_;            // 1 − η
-  int blocks_;              // 16-label blocks per pixel
+  int blocks_;              // 16-label blocks per table row
   int stride_;              // 16 * blocks_
   double step_;             // table spacing in μ
   int num_points_;          // table entries per label
   std::vector<Block> table_;  // point j's row: blocks [j * blocks_, (j + 1) * blocks_), F(j * step | label)
-  std::vector<float> label_cell_;  // kExact: each label's own quantile in table cells, padded to stride_
-  std::vector<float> ones_;  // stride_ ones: pixel sums as dot products
-  std::vector<float> mean_, second_moment_;  // kGaussian, padded to stride_
-  float z_;                 // Φ⁻¹(1 − η), kGaussian
+  // The validation pass dots every pixel with these rows: ones (the pixel's sum), then per method
+  // kExact: the numerator and the denominator of the first guess (see the constructor), and F(0 | label);
+  // kSearch: F(0 | label) and F(step | label) (Algorithm 1's first two grid points);
+  // kGaussian: each label's mean and second moment.
+  int num_dot_vectors_;
+  std::vector<Block> dot_vectors_;
+  float z_{0.0f};           // Φ⁻¹(1 − η), kGaussian
   double cdf_interpolation_error_{0.0};
+  bool avx2_{false};        // The dot products run on AVX2 (else on the portable kernels, same results).
 };
 
 }  // namespace cairn::perception

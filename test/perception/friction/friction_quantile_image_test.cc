@@ -1,13 +1,30 @@
 #include "cairn/perception/friction/friction_quantile_image.h"
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "expect_throws.h"
 
 namespace cairn::perception {
+
+// Reaches the image's choice of kernels (a friend of FrictionQuantileImage).
+class FrictionQuantileImageTester {
+ public:
+  static bool UsesAvx2(const FrictionQuantileImage& image) { return image.avx2_; }
+  // A copy of `image` that computes with the portable kernels, whatever the processor.
+  static FrictionQuantileImage Portable(const FrictionQuantileImage& image) {
+    FrictionQuantileImage copy = image;
+    copy.avx2_ = false;
+    return copy;
+  }
+};
+
 namespace {
 
 // Random per-pixel mixtures: mostly one dominant label (as a segmenter gives), some mixed, some not walkable.
@@ -113,6 +130,129 @@ TEST(FrictionQuantileImageTest, OtherDistributionKindsMatchBisectionWithin1e4) {
                                    {"asphalt", FrictionDistribution::Normal(0.74, 0.12)},
                                    {"water", FrictionDistribution::NotWalkable()}});
   EXPECT_LT(WorstErrorAgainstBisection(registry, RandomProbabilities(registry, 20, 20, 23), 0.95, 1), 1e-4);
+}
+
+// Probability spread over every label (a flat Dirichlet): no dominant label, so the searches start far from the
+// root and the bisection safeguard takes over more often than for segmenter-like pixels.
+cv::Mat SpreadProbabilities(int n, int rows, int cols, unsigned seed) {
+  cv::Mat image(rows, cols, CV_32FC(n));
+  std::mt19937 random(seed);
+  std::exponential_distribution<double> exponential(1.0);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      std::vector<double> p(n);
+      double sum = 0.0;
+      for (double& v : p) sum += (v = exponential(random));
+      for (int i = 0; i < n; ++i) image.ptr<float>(r)[c * n + i] = static_cast<float>(p[i] / sum);
+    }
+  }
+  return image;
+}
+
+// The thesis' table with six more labels (20: the dot products span three 8-label chunks and two table blocks).
+MaterialRegistry TwentyLabels() {
+  std::vector<MaterialRegistry::Material> materials = MaterialRegistry::ThesisTable33().materials();
+  materials.push_back({"ice", FrictionDistribution::GeneralizedExtremeValue(0.15, 0.04, -0.1), 0});
+  materials.push_back({"rubber", FrictionDistribution::GeneralizedExtremeValue(0.9, 0.1, 0.2), 0});
+  materials.push_back({"mud", FrictionDistribution::TruncatedNormal(0.2, 0.15), 0});
+  materials.push_back({"gravel", FrictionDistribution::Normal(0.6, 0.1), 0});
+  materials.push_back({"tile", FrictionDistribution::Normal(0.5, 0.05), 0});
+  materials.push_back({"lava", FrictionDistribution::NotWalkable(), 0});
+  return MaterialRegistry(std::move(materials));
+}
+
+TEST(FrictionQuantileImageTest, TwentyLabelsMatchBisectionWithin1e4) {
+  const MaterialRegistry registry = TwentyLabels();
+  ASSERT_EQ(registry.size(), 20);
+  EXPECT_LT(WorstErrorAgainstBisection(registry, SpreadProbabilities(20, 12, 15, 41), 0.95, 2), 1e-4);
+  EXPECT_LT(WorstErrorAgainstBisection(registry, RandomProbabilities(registry, 12, 15, 43), 0.9, 1), 1e-4);
+}
+
+// The AVX2 kernels (used when the processor has AVX2) and the portable ones add in the same order, so every
+// method gives the same bits with either, for one, two and three 8-label chunks per pixel, on segmenter-like,
+// bimodal and spread-out pixels, and rows of a length that is not a multiple of the kernels' 4 or 8 pixels.
+TEST(FrictionQuantileImageTest, PortableKernelsGiveTheSameBitsAsTheAvx2Ones) {
+  const auto thesis = MaterialRegistry::ThesisTable33();
+  if (!FrictionQuantileImageTester::UsesAvx2(FrictionQuantileImage(thesis, {}))) {
+    GTEST_SKIP() << "This processor has no AVX2; the portable kernels are the only ones.";
+  }
+  const MaterialRegistry five({{"ice", FrictionDistribution::GeneralizedExtremeValue(0.15, 0.04, -0.1)},
+                               {"rubber", FrictionDistribution::GeneralizedExtremeValue(0.9, 0.1, 0.2)},
+                               {"mud", FrictionDistribution::TruncatedNormal(0.2, 0.15)},
+                               {"asphalt", FrictionDistribution::Normal(0.74, 0.12)},
+                               {"water", FrictionDistribution::NotWalkable()}});
+  const MaterialRegistry twenty = TwentyLabels();
+  int compared = 0;
+  for (const MaterialRegistry* registry : {&five, &thesis, &twenty}) {
+    const int n = registry->size();
+    std::vector<cv::Mat> images = {SpreadProbabilities(n, 9, 37, 7), RandomProbabilities(*registry, 9, 37, 8)};
+    if (n == 14) images.push_back(HardProbabilities(*registry, 9, 37, 9));
+    for (const QuantileMethod method :
+         {QuantileMethod::kExact, QuantileMethod::kSearch, QuantileMethod::kGaussian}) {
+      const FrictionQuantileImage fast(*registry, {0.95, method, 0.02, 2});
+      ASSERT_TRUE(FrictionQuantileImageTester::UsesAvx2(fast));
+      const FrictionQuantileImage portable = FrictionQuantileImageTester::Portable(fast);
+      ASSERT_FALSE(FrictionQuantileImageTester::UsesAvx2(portable));
+      for (const cv::Mat& probabilities : images) {
+        const cv::Mat a = fast.Compute(probabilities);
+        const cv::Mat b = portable.Compute(probabilities);
+        ASSERT_EQ(a.size(), b.size());
+        EXPECT_EQ(std::memcmp(a.data, b.data, a.total() * a.elemSize()), 0)
+            << n << " labels, method " << static_cast<int>(method) << ", largest difference "
+            << cv::norm(a, b, cv::NORM_INF);
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 3 * 7);
+  // Both name the same first bad pixel.
+  cv::Mat bad = RandomProbabilities(thesis, 4, 9, 12);
+  bad.ptr<float>(2)[8 * 14 + 13] += 0.01f;
+  const FrictionQuantileImage fast(thesis, {0.95, QuantileMethod::kExact, 0.02, 1});
+  for (const FrictionQuantileImage& image : {fast, FrictionQuantileImageTester::Portable(fast)}) {
+    CAIRN_EXPECT_THROWS_WITH(image.Compute(bad), std::invalid_argument, "pixel (2, 8) sum to 1.01");
+  }
+}
+
+// A region of a larger image: its rows are not contiguous, and past each row's last pixel lie other pixels, here
+// NaN, which the kernels must not read.
+TEST(FrictionQuantileImageTest, RegionOfALargerImageIsReadWithinItsRows) {
+  const auto registry = MaterialRegistry::ThesisTable33();
+  cv::Mat canvas(12, 20, CV_32FC(14));
+  canvas.reshape(1).setTo(std::numeric_limits<double>::quiet_NaN());
+  const cv::Mat region = canvas(cv::Rect(3, 2, 13, 9));
+  HardProbabilities(registry, 9, 13, 21).copyTo(region);
+  ASSERT_FALSE(region.isContinuous());
+  for (const QuantileMethod method : {QuantileMethod::kExact, QuantileMethod::kSearch, QuantileMethod::kGaussian}) {
+    const FrictionQuantileImage image(registry, {0.95, method, 0.02, 2});
+    const cv::Mat expected = image.Compute(region.clone());
+    for (const FrictionQuantileImage& kernels : {image, FrictionQuantileImageTester::Portable(image)}) {
+      const cv::Mat quantiles = kernels.Compute(region);
+      ASSERT_EQ(quantiles.size(), region.size());
+      EXPECT_EQ(cv::norm(quantiles, expected, cv::NORM_INF), 0.0) << "method " << static_cast<int>(method);
+    }
+  }
+}
+
+TEST(FrictionQuantileImageTest, OutputMayBeTheInput) {
+  // Compute(p, &p) replaces the probabilities by the quantiles; with one label the two even have the same type,
+  // and the output must still not overwrite pixels before they are read.
+  const auto registry = MaterialRegistry::ThesisTable33();
+  const FrictionQuantileImage image(registry, {});
+  cv::Mat probabilities = HardProbabilities(registry, 5, 6, 33);
+  const cv::Mat expected = image.Compute(probabilities);
+  image.Compute(probabilities, &probabilities);
+  ASSERT_EQ(probabilities.type(), CV_32F);
+  EXPECT_EQ(cv::norm(probabilities, expected, cv::NORM_INF), 0.0);
+
+  const MaterialRegistry single({{"asphalt", FrictionDistribution::Normal(0.74, 0.12)}});
+  const FrictionQuantileImage one_label(single, {});
+  cv::Mat ones(3, 4, CV_32FC1, cv::Scalar(1.0));
+  one_label.Compute(ones, &ones);
+  const double expected_quantile = single.material(0).friction.Quantile(0.05);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(ones.at<float>(r, c), expected_quantile, 1e-4);
+  }
 }
 
 TEST(FrictionQuantileImageTest, MixtureQuantileLiesBetweenTheComponentQuantiles) {
