@@ -45,7 +45,9 @@ class CostCurveSensorModel {
   /// pose in the grid's world frame. Requires min_disparity >= 1 so that every ray has a finite far end. Throws
   /// std::invalid_argument for an empty volume, a bad calibration, min_disparity < 1, more than 2^22 - 1 pixels
   /// (the per-frame ray count of the fixed-point accumulation) or probability limits within e^-60 of 0 or 1. The
-  /// grid is the same, bit for bit, for any Options::num_threads.
+  /// grid is the same, bit for bit, for any Options::num_threads. The calling thread keeps the per-frame
+  /// accumulators (8 bytes per grid cell and worker thread) between calls, so that a stream of frames does not
+  /// allocate them every frame; they are freed when it exits.
   void Integrate(const DisparityVolume& confidence, const StereoCalibration& calibration,
                  const Eigen::Isometry3d& X_WC, OccupancyGrid* grid) const;
 

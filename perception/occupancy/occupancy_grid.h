@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "cairn/perception/internal/grid_walk.h"
 
 namespace cairn::perception {
 
@@ -80,7 +83,9 @@ class OccupancyGrid {
   std::vector<Eigen::Vector3d> OccupiedPoints(double threshold = 0.5) const;
 
   /// Walks the ray origin + t direction for t in [t_begin, t_end] through the grid (3-D DDA, Amanatides-Woo),
-  /// calling visit(index, t_enter, t_exit) for every cell crossed, in order. Stops early when visit returns false.
+  /// calling visit(index, t_enter, t_exit) for every cell crossed, in order (t_enter is the previous call's t_exit).
+  /// Stops early when visit returns false. Where the ray passes exactly through an edge or corner, the cells it only
+  /// touches there are not visited (see internal::GridWalk). A zero direction visits the cell of `origin` once.
   template <typename Visit>
   void Traverse(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double t_begin, double t_end,
                 const Visit& visit) const;
@@ -106,76 +111,21 @@ class OccupancyGrid {
 template <typename Visit>
 void OccupancyGrid::Traverse(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double t_begin,
                              double t_end, const Visit& visit) const {
-  // Clip [t_begin, t_end] to the grid's box (slabs).
-  const Eigen::Vector3d hi = max_corner();
-  double t0 = t_begin;
-  double t1 = t_end;
-  for (int a = 0; a < 3; ++a) {
-    if (direction[a] == 0.0) {
-      if (origin[a] < min_corner_[a] || origin[a] >= hi[a]) return;
-      continue;
-    }
-    double ta = (min_corner_[a] - origin[a]) / direction[a];
-    double tb = (hi[a] - origin[a]) / direction[a];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
+  if (direction.isZero()) {  // the ray is a point
+    const auto cell = CellOf(origin);
+    if (cell && t_begin < t_end) visit(Index(*cell), t_begin, t_end);
+    return;
   }
-  if (!(t0 < t1)) return;
-  const Eigen::Vector3d start = origin + t0 * direction;
-  // Per axis: the t of the next boundary, the t between boundaries, the linear-index stride of a step and the
-  // steps left before the ray leaves the grid. Which axis steps next changes irregularly along a ray, so the walk
-  // chooses it with selects on registers rather than branches: a mispredicted branch per cell used to cost more
-  // than the rest of the step.
-  double t_max[3];
-  double t_delta[3];
-  std::ptrdiff_t stride[3];
-  std::ptrdiff_t steps_left[3];
-  std::ptrdiff_t index = 0;
-  const std::ptrdiff_t axis_stride[3] = {1, dims_.x(), static_cast<std::ptrdiff_t>(dims_.x()) * dims_.y()};
-  for (int a = 0; a < 3; ++a) {
-    const int cell = std::min(dims_[a] - 1, std::max(0, static_cast<int>((start[a] - min_corner_[a]) / resolution_)));
-    index += cell * axis_stride[a];
-    if (direction[a] > 0.0) {
-      stride[a] = axis_stride[a];
-      steps_left[a] = dims_[a] - 1 - cell;
-      t_max[a] = (min_corner_[a] + (cell + 1) * resolution_ - origin[a]) / direction[a];
-      t_delta[a] = resolution_ / direction[a];
-    } else if (direction[a] < 0.0) {
-      stride[a] = -axis_stride[a];
-      steps_left[a] = cell;
-      t_max[a] = (min_corner_[a] + cell * resolution_ - origin[a]) / direction[a];
-      t_delta[a] = -resolution_ / direction[a];
-    } else {
-      stride[a] = 0;
-      steps_left[a] = std::numeric_limits<std::ptrdiff_t>::max();
-      t_max[a] = std::numeric_limits<double>::infinity();
-      t_delta[a] = std::numeric_limits<double>::infinity();
-    }
-  }
-  double tx = t_max[0], ty = t_max[1], tz = t_max[2];
-  std::ptrdiff_t nx = steps_left[0], ny = steps_left[1], nz = steps_left[2];
-  double t = t0;
-  while (t < t1) {
-    // The axis whose boundary comes first; ties go to the later axis (y over x, z over both).
-    const bool x_first = tx < ty;
-    const double t_xy = x_first ? tx : ty;
-    const bool xy_first = t_xy < tz;
-    const double t_exit = std::min(xy_first ? t_xy : tz, t1);
-    if (t_exit > t && !visit(static_cast<std::size_t>(index), t, t_exit)) return;
+  internal::GridWalk walk;
+  if (!walk.Start(min_corner_, resolution_, dims_, origin, direction, t_begin, t_end)) return;
+  double t = walk.t_begin();
+  const double unit = walk.unit();
+  walk.Walk(std::numeric_limits<std::int64_t>::max(), [&](std::size_t index, std::int64_t exit) {
+    const double t_exit = static_cast<double>(exit) * unit;
+    const bool more = visit(index, t, t_exit);
     t = t_exit;
-    const bool step_x = x_first && xy_first;
-    const bool step_y = !x_first && xy_first;
-    const bool step_z = !xy_first;
-    tx += step_x ? t_delta[0] : 0.0;
-    ty += step_y ? t_delta[1] : 0.0;
-    tz += step_z ? t_delta[2] : 0.0;
-    index += step_x ? stride[0] : (step_y ? stride[1] : stride[2]);
-    nx -= step_x;
-    ny -= step_y;
-    nz -= step_z;
-    if ((nx | ny | nz) < 0) return;  // left the grid
-  }
+    return more;
+  });
 }
 
 }  // namespace cairn::perception

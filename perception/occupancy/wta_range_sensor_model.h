@@ -38,7 +38,8 @@ class WtaRangeSensorModel {
   /// Throws std::invalid_argument for a non-positive sigma, a negative peak-ratio threshold or bad limits.
   explicit WtaRangeSensorModel(const Options& options);
 
-  /// Integrates one frame of WTA disparities over [min_disparity, max_disparity] (min_disparity >= 1).
+  /// Integrates one frame of WTA disparities over [min_disparity, max_disparity] (min_disparity >= 1). Like
+  /// CostCurveSensorModel::Integrate(): the same grid for any thread count, accumulators kept by the calling thread.
   void Integrate(const WtaResult& wta, int min_disparity, int max_disparity, const StereoCalibration& calibration,
                  const Eigen::Isometry3d& X_WC, OccupancyGrid* grid) const;
 

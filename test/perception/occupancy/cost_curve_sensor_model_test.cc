@@ -48,7 +48,7 @@ TEST(CostCurveSensorModelTest, SameGridForAnyThreadCount) {
       for (int k = 0; k < 16; ++k) c[k] /= sum;
     }
   std::vector<float> reference;
-  for (int threads : {1, 2, 3}) {
+  for (int threads : {1, 2, 3, 7}) {
     OccupancyGrid grid(Eigen::Vector3d(-4.0, -3.0, 0.0), 0.1, Eigen::Vector3i(80, 60, 90));
     CostCurveSensorModel::Options options;
     options.num_threads = threads;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
+#include <random>
 #include <stdexcept>
 
 #include "expect_throws.h"
@@ -55,6 +57,92 @@ TEST(OccupancyGridTest, TraverseVisitsEveryCrossedCellInOrder) {
   EXPECT_EQ(cells.size(), 15u);
   EXPECT_EQ(cells.front(), grid.Index(Eigen::Vector3i(0, 0, 0)));
   EXPECT_EQ(cells.back(), grid.Index(Eigen::Vector3i(9, 5, 0)));
+}
+
+// Through an edge (two boundaries at once) or a corner (three), the cells the ray only touches are not visited.
+TEST(OccupancyGridTest, TraverseSkipsCellsTouchedOnlyAtAnEdgeOrCorner) {
+  OccupancyGrid grid(Eigen::Vector3d::Zero(), 1.0, Eigen::Vector3i(4, 4, 4));
+  for (const Eigen::Vector3d& direction : {Eigen::Vector3d(1.0, 1.0, 0.0), Eigen::Vector3d(1.0, 1.0, 1.0)}) {
+    std::vector<Eigen::Vector3i> cells;
+    double last_t = 0.0;
+    grid.Traverse(Eigen::Vector3d(0.5, 0.5, 0.5), direction, 0.0, 100.0,
+                  [&](std::size_t index, double t_in, double t_out) {
+                    EXPECT_EQ(t_in, last_t);
+                    last_t = t_out;
+                    cells.push_back(grid.Cell(index));
+                    return true;
+                  });
+    // Leaves through x = 4 at t = 3.5, having crossed the diagonal cells only.
+    EXPECT_NEAR(last_t, 3.5, 1e-12);
+    ASSERT_EQ(cells.size(), 4u) << direction.transpose();
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(cells[i], Eigen::Vector3i(i, i, direction.z() > 0.0 ? i : 0)) << direction.transpose();
+    }
+  }
+}
+
+// Random rays from inside and outside the grid: every cell is visited once, in order, as a face neighbour of the
+// previous one, over an interval whose middle lies in it; together the intervals cover the ray's part in the grid.
+TEST(OccupancyGridTest, TraverseCoversTheRayCellByCell) {
+  OccupancyGrid grid(Eigen::Vector3d(-1.1, 0.4, -0.7), 0.3, Eigen::Vector3i(7, 5, 9));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  int visits = 0;
+  for (int ray = 0; ray < 2000; ++ray) {
+    const Eigen::Vector3d origin = grid.min_corner() + Eigen::Vector3d(1.2 + 1.6 * uniform(rng), 0.75 + uniform(rng),
+                                                                       1.35 + 2.0 * uniform(rng));
+    Eigen::Vector3d direction(uniform(rng), uniform(rng), uniform(rng));
+    if (ray % 5 == 0) direction[ray % 3] = 0.0;  // parallel to a plane of the grid
+    const double t_begin = ray % 2 == 0 ? 0.0 : -3.0;
+    const double t_end = 0.5 + 4.0 * (1.0 + uniform(rng));
+    // The part of [t_begin, t_end] inside the box.
+    double t0 = t_begin;
+    double t1 = t_end;
+    for (int a = 0; a < 3; ++a) {
+      if (direction[a] == 0.0) {
+        if (origin[a] < grid.min_corner()[a] || origin[a] >= grid.max_corner()[a]) t1 = t0;
+        continue;
+      }
+      const double ta = (grid.min_corner()[a] - origin[a]) / direction[a];
+      const double tb = (grid.max_corner()[a] - origin[a]) / direction[a];
+      t0 = std::max(t0, std::min(ta, tb));
+      t1 = std::min(t1, std::max(ta, tb));
+    }
+    double covered = 0.0;
+    double last_t = t0;
+    std::optional<Eigen::Vector3i> previous;
+    grid.Traverse(origin, direction, t_begin, t_end, [&](std::size_t index, double t_in, double t_out) {
+      ++visits;
+      EXPECT_LT(index, grid.num_cells());
+      EXPECT_NEAR(t_in, last_t, 1e-12);
+      EXPECT_GT(t_out, t_in);
+      const Eigen::Vector3i cell = grid.Cell(index);
+      if (previous) {
+        EXPECT_EQ((cell - *previous).cwiseAbs().sum(), 1) << "ray " << ray;
+      }
+      const auto middle = grid.CellOf(origin + 0.5 * (t_in + t_out) * direction);
+      if (t_out - t_in > 1e-9 && middle) {
+        EXPECT_EQ(*middle, cell) << "ray " << ray;
+      }
+      covered += t_out - t_in;
+      last_t = t_out;
+      previous = cell;
+      return true;
+    });
+    EXPECT_NEAR(covered, std::max(0.0, t1 - t0), 1e-9) << "ray " << ray;
+  }
+  EXPECT_GT(visits, 5000);
+  // A zero direction: the ray is the point `origin`, whose cell is visited once.
+  int calls = 0;
+  grid.Traverse(grid.min_corner() + Eigen::Vector3d(0.45, 0.15, 0.75), Eigen::Vector3d::Zero(), 0.0, 2.0,
+                [&](std::size_t index, double t_in, double t_out) {
+                  ++calls;
+                  EXPECT_EQ(grid.Cell(index), Eigen::Vector3i(1, 0, 2));
+                  EXPECT_EQ(t_in, 0.0);
+                  EXPECT_EQ(t_out, 2.0);
+                  return true;
+                });
+  EXPECT_EQ(calls, 1);
 }
 
 TEST(OccupancyGridTest, RejectsBadConstruction) {
