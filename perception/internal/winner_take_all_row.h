@@ -30,6 +30,11 @@ void AllocateWtaResult(int height, int width, WtaResult* result);
 void WinnerTakeAllRow(const float* row, int width, int num_disp, int dmin, const WtaOptions& options, int y,
                       float* right_value, int32_t* right_index, WtaResult* result);
 
+/// The end of a row's winner-take-all: the right view's winners in image order (`reversed_right_index` holds the
+/// winner of right column xr at width - 1 - xr) and the left-right check of every left winner.
+void LeftRightCheckRow(int width, int dmin, int lr_tolerance, const int32_t* reversed_right_index,
+                       const int32_t* best_index, int32_t* right_best, uint8_t* consistent);
+
 /// True when the CPU can run the AVX2 kernels below (checked once). Callers fall back to the portable kernels
 /// otherwise; both give identical results (winner_take_all_avx2_test).
 bool CpuHasAvx2();

@@ -115,15 +115,7 @@ void WtaRowKernel(const float* row, int width, int num_disp, int dmin, bool subp
     }
     disparity[x] = static_cast<float>(dmin + best) + offset;
   }
-  for (int xr = 0; xr < width; ++xr) right_best[xr] = right_index[width - 1 - xr];
-  for (int x = 0; x < width; ++x) {
-    consistent[x] = 0;
-    const int k = best_index[x];
-    if (k < 0) continue;
-    const int xr = x - (dmin + k);
-    if (xr < 0 || xr >= width) continue;
-    if (right_best[xr] >= 0 && std::abs(right_best[xr] - k) <= lr_tolerance) consistent[x] = 255;
-  }
+  internal::LeftRightCheckRow(width, dmin, lr_tolerance, right_index, best_index, right_best, consistent);
 }
 
 }  // namespace
@@ -137,6 +129,19 @@ void AllocateWtaResult(int height, int width, WtaResult* result) {
   result->peak_ratio.create(height, width, CV_32F);
   result->right_best_index.create(height, width, CV_32S);
   result->lr_consistent.create(height, width, CV_8U);
+}
+
+void LeftRightCheckRow(int width, int dmin, int lr_tolerance, const int32_t* reversed_right_index,
+                       const int32_t* best_index, int32_t* right_best, uint8_t* consistent) {
+  for (int xr = 0; xr < width; ++xr) right_best[xr] = reversed_right_index[width - 1 - xr];
+  for (int x = 0; x < width; ++x) {
+    consistent[x] = 0;
+    const int k = best_index[x];
+    if (k < 0) continue;
+    const int xr = x - (dmin + k);
+    if (xr < 0 || xr >= width) continue;
+    if (right_best[xr] >= 0 && std::abs(right_best[xr] - k) <= lr_tolerance) consistent[x] = 255;
+  }
 }
 
 void WinnerTakeAllRow(const float* row, int width, int num_disp, int dmin, const WtaOptions& options, int y,

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -141,20 +140,6 @@ CAIRN_TARGET_AVX2 inline __m256i LoadSums(const int32_t* sums, int j, int chunks
                                      : _mm256_maskload_epi32(sums + 8 * j, tail_mask);
 }
 
-// After a row's pixels: the right view's winners in image order, and the left-right check.
-void FinishRow(int width, int dmin, int lr_tolerance, const WtaRowScratch& scratch, const int32_t* best_index,
-               int32_t* right_best, uint8_t* consistent) {
-  for (int xr = 0; xr < width; ++xr) right_best[xr] = scratch.right_index[scratch.shift + width - 1 - xr];
-  for (int x = 0; x < width; ++x) {
-    consistent[x] = 0;
-    const int k = best_index[x];
-    if (k < 0) continue;
-    const int xr = x - (dmin + k);
-    if (xr < 0 || xr >= width) continue;
-    if (right_best[xr] >= 0 && std::abs(right_best[xr] - k) <= lr_tolerance) consistent[x] = 255;
-  }
-}
-
 struct RowOutputs {
   float* disparity;
   int32_t* best_index;
@@ -192,7 +177,8 @@ CAIRN_TARGET_AVX2 void WinnerTakeAllRowAvx2(const float* row, int width, int num
              scratch->right_index.data() + slot, out.disparity + x, out.best_index + x, out.best_cost + x,
              out.peak_ratio + x);
   }
-  FinishRow(width, dmin, options.lr_tolerance, *scratch, out.best_index, out.right_best, out.consistent);
+  LeftRightCheckRow(width, dmin, options.lr_tolerance, scratch->right_index.data() + scratch->shift, out.best_index,
+                    out.right_best, out.consistent);
 }
 
 CAIRN_TARGET_AVX2 void AggregateRowAndWinnerTakeAllAvx2(const int32_t* colsum, int width, int num_disp, int dmin,
@@ -244,7 +230,8 @@ CAIRN_TARGET_AVX2 void AggregateRowAndWinnerTakeAllAvx2(const int32_t* colsum, i
              scratch->right_index.data() + slot, out.disparity + x, out.best_index + x, out.best_cost + x,
              out.peak_ratio + x);
   }
-  FinishRow(width, dmin, options.lr_tolerance, *scratch, out.best_index, out.right_best, out.consistent);
+  LeftRightCheckRow(width, dmin, options.lr_tolerance, scratch->right_index.data() + scratch->shift, out.best_index,
+                    out.right_best, out.consistent);
 }
 #else
 void WinnerTakeAllRowAvx2(const float*, int, int, int, const WtaOptions&, int, WtaRowScratch*, WtaResult*) {

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "expect_throws.h"
+#include "same_wta_result.h"
 
 namespace cairn::perception {
 namespace {
@@ -127,10 +128,6 @@ TEST(ComputeCostVolumeTest, SobelPrefilterIsClippedAndCentred) {
 TEST(ComputeCostVolumeTest, OnePassWinnerTakeAllMatchesTheTwoCalls) {
   const cv::Mat left = RandomImage(31, 53, 5);
   const cv::Mat right = RandomImage(31, 53, 6);
-  auto same = [](const cv::Mat& a, const cv::Mat& b) {
-    return a.size() == b.size() && a.type() == b.type() &&
-           std::equal(a.datastart, a.dataend, b.datastart);  // bytes: NaN and infinity compare too
-  };
   const std::pair<int, int> ranges[] = {{1, 14}, {-3, 12}, {0, 7}, {2, 2}, {0, 40}};
   for (CostFunction cost : {CostFunction::kSsd, CostFunction::kBtSad}) {
     for (int threads : {1, 3}) {
@@ -149,12 +146,7 @@ TEST(ComputeCostVolumeTest, OnePassWinnerTakeAllMatchesTheTwoCalls) {
       ComputeWinnerTakeAll(separate_costs, WtaOptions{}, &separate);
       ComputeCostVolumeAndWinnerTakeAll(left, right, options, WtaOptions{}, &fused_costs, &fused);
       EXPECT_TRUE(fused_costs.data() == separate_costs.data());
-      EXPECT_TRUE(same(fused.disparity, separate.disparity));
-      EXPECT_TRUE(same(fused.best_index, separate.best_index));
-      EXPECT_TRUE(same(fused.best_cost, separate.best_cost));
-      EXPECT_TRUE(same(fused.peak_ratio, separate.peak_ratio));
-      EXPECT_TRUE(same(fused.right_best_index, separate.right_best_index));
-      EXPECT_TRUE(same(fused.lr_consistent, separate.lr_consistent));
+      EXPECT_TRUE(SameWtaResult(fused, separate));
      }
     }
   }

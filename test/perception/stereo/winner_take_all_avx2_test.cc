@@ -12,13 +12,10 @@
 
 #include "cairn/perception/internal/winner_take_all_row.h"
 #include "cairn/perception/stereo/disparity_volume.h"
+#include "same_wta_result.h"
 
 namespace cairn::perception {
 namespace {
-
-bool SameBytes(const cv::Mat& a, const cv::Mat& b) {
-  return a.size() == b.size() && a.type() == b.type() && std::equal(a.datastart, a.dataend, b.datastart);
-}
 
 TEST(WinnerTakeAllAvx2Test, MatchesThePortableKernelByteForByte) {
   if (!internal::CpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2; only the portable kernel runs here";
@@ -58,12 +55,7 @@ TEST(WinnerTakeAllAvx2Test, MatchesThePortableKernelByteForByte) {
                                    right_index.data(), &portable);
         internal::WinnerTakeAllRowAvx2(costs.curve(y, 0), width, num_disp, dmin, options, y, &scratch, &vector);
       }
-      EXPECT_TRUE(SameBytes(vector.disparity, portable.disparity));
-      EXPECT_TRUE(SameBytes(vector.best_index, portable.best_index));
-      EXPECT_TRUE(SameBytes(vector.best_cost, portable.best_cost));
-      EXPECT_TRUE(SameBytes(vector.peak_ratio, portable.peak_ratio));
-      EXPECT_TRUE(SameBytes(vector.right_best_index, portable.right_best_index));
-      EXPECT_TRUE(SameBytes(vector.lr_consistent, portable.lr_consistent));
+      EXPECT_TRUE(SameWtaResult(vector, portable));
       // The test must exercise what it claims: ties, rejected pixels and left-right disagreements all occur.
       EXPECT_GT(cv::countNonZero(portable.lr_consistent), 0);
       if (num_disp > 1) {
