@@ -22,10 +22,11 @@ namespace cairn::perception {
 ///   reports the table's largest CDF error (measured at every cell's midpoint).
 /// - kSearch: the thesis' Algorithm 1 with step `tolerance`, on CDFs tabulated at its grid points (exact values).
 /// - kGaussian: the moment approximation.
-/// Rows are split across threads. Each row is read where it lies (no copy) in one pass that validates it and takes
-/// each pixel's sum and the dot products the method starts from; the searches then revisit only their pixels'
-/// table cells. The dot products run on AVX2 when the processor has it, else on portable code that adds in the
-/// same order, so results depend neither on the thread count nor on the processor.
+/// Rows are split across threads. Each row is read in one pass that validates it and takes each pixel's sum and
+/// the dot products the method starts from; the searches then revisit only their pixels' table cells. The dot
+/// products run on AVX2 when the processor has it, reading the row where it lies, else on portable code that copies
+/// the row into padded pixels and adds in the same order, so results depend neither on the thread count nor on the
+/// processor.
 class FrictionQuantileImage {
  public:
   struct Options {

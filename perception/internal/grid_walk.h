@@ -26,9 +26,11 @@ namespace cairn::perception::internal {
 /// there, and no step can leave the grid whatever the rounding.
 ///
 /// Where the ray passes through an edge or a corner of cells (two boundaries at the same t, up to rounding), the
-/// cells it would cross for at most kSliver units (at most 2^-45 of the largest |t|, some 16 times the rounding of
-/// the boundaries) are stepped over without a visit: they are touched at a point, and rounding alone decides
-/// whether such a sliver exists. Ties between boundaries go to the later axis (z, then y, then x).
+/// cells it would cross for at most kSliver units (at most 2^-45 of the largest |t|, well above the rounding of
+/// boundaries computed from coordinates of the size of the walk's t) are stepped over without a visit: they are
+/// touched at a point, and rounding alone decides whether such a sliver exists. (Far from the origin, with
+/// coordinates much larger than t, boundary rounding can exceed the sliver, and such cells may be visited for
+/// their rounding-sized crossing.) Ties between boundaries go to the later axis (z, then y, then x).
 class GridWalk {
  public:
   /// Crossings of at most this many units are not visited (see the class comment).
@@ -77,8 +79,11 @@ class GridWalk {
         continue;
       }
       const bool up = direction[a] > 0.0;
-      const std::int64_t next = ToFixedSaturated((min_corner[a] + (cell + (up ? 1 : 0)) * resolution - origin[a]) /
-                                                 direction[a]);
+      // A start on a cell boundary may be assigned the cell whose computed boundary lies a rounding error behind
+      // it; with a nearly parallel direction that boundary's t is then far negative. It is crossed at the start.
+      const std::int64_t next =
+          std::max(ToFixedSaturated((min_corner[a] + (cell + (up ? 1 : 0)) * resolution - origin[a]) / direction[a]),
+                   position_ / 4);
       const std::int64_t spacing = ToFixedSaturated(resolution / std::abs(direction[a]));
       next_[a] = next * 4 + code;
       spacing_[a] = spacing * 4;
@@ -134,10 +139,11 @@ class GridWalk {
     return !stopped && position < end_;
   }
 
-  /// Fixed-point value of a parameter (rounded toward zero), saturated above the end of any walk.
+  /// Fixed-point value of a parameter (rounded toward zero), saturated to [-kNever, kNever] (beyond any walk).
   std::int64_t ToFixedSaturated(double t) const {
     const double scaled = t * scale_;
-    return scaled < static_cast<double>(kNever) ? static_cast<std::int64_t>(scaled) : kNever;
+    if (!(scaled < static_cast<double>(kNever))) return kNever;  // NaN too
+    return scaled > -static_cast<double>(kNever) ? static_cast<std::int64_t>(scaled) : -kNever;
   }
   /// The parameter t of one fixed-point unit.
   double unit() const { return unit_; }

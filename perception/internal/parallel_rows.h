@@ -4,6 +4,7 @@
 /// Internal: splits an image's rows across worker threads. Not part of the installed API.
 
 #include <algorithm>
+#include <exception>
 #include <thread>
 #include <vector>
 
@@ -16,7 +17,9 @@ inline int ResolveThreadCount(int requested) {
 }
 
 /// Calls body(thread_index, row_begin, row_end) on contiguous bands of [0, rows) covering every row once, one
-/// band per thread; band t covers a deterministic range, so results never depend on scheduling.
+/// band per thread; band t covers a deterministic range, so results never depend on scheduling. An exception
+/// thrown by a band (std::bad_alloc, say) reaches the caller once every band has finished; if several bands
+/// throw, the lowest band's exception does.
 template <typename Body>
 void ParallelForRows(int rows, int num_threads, const Body& body) {
   const int threads = std::max(1, std::min(num_threads, rows));
@@ -24,15 +27,26 @@ void ParallelForRows(int rows, int num_threads, const Body& body) {
     body(0, 0, rows);
     return;
   }
+  std::vector<std::exception_ptr> errors(threads);
+  auto run = [&body, &errors](int t, int begin, int end) {
+    try {
+      body(t, begin, end);
+    } catch (...) {
+      errors[t] = std::current_exception();
+    }
+  };
   std::vector<std::thread> workers;
   workers.reserve(threads - 1);
   for (int t = 1; t < threads; ++t) {
     const int begin = static_cast<int>(static_cast<long long>(rows) * t / threads);
     const int end = static_cast<int>(static_cast<long long>(rows) * (t + 1) / threads);
-    workers.emplace_back([&body, t, begin, end] { body(t, begin, end); });
+    workers.emplace_back(run, t, begin, end);
   }
-  body(0, 0, static_cast<int>(static_cast<long long>(rows) / threads));
+  run(0, 0, static_cast<int>(static_cast<long long>(rows) / threads));
   for (auto& worker : workers) worker.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
 }
 
 }  // namespace cairn::perception::internal

@@ -423,6 +423,12 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
                                 ", " + std::to_string(options.max_probability) +
                                 "] are too close to 0 or 1; use limits like [0.12, 0.97]");
   }
+  // The fixed-point disparities of the walk need them below 2^20.
+  const int64_t max_disparity = static_cast<int64_t>(dmin) + num_disp - 1;
+  if (max_disparity >= (int64_t{1} << 20)) {
+    throw std::invalid_argument("occupancy update: max disparity " + std::to_string(max_disparity) +
+                                " is 2^20 or more; pass the disparity range the matcher searched");
+  }
   // As many threads as ParallelForRows() will run (no more than rows), one accumulator each.
   const int threads = std::max(1, std::min(ResolveThreadCount(options.num_threads), height));
   const std::size_t num_cells = grid->num_cells();

@@ -41,6 +41,11 @@ bool CpuHasAvx2();
 
 /// Per-thread scratch of the AVX2 kernels, sized for one image width and disparity range by Resize().
 struct WtaRowScratch {
+  WtaRowScratch() = default;
+  // `curve` points into `curve_storage`: a copy would point into the original.
+  WtaRowScratch(const WtaRowScratch&) = delete;
+  WtaRowScratch& operator=(const WtaRowScratch&) = delete;
+
   void Resize(int width, int num_disp, int dmin);
 
   int chunks{0};  ///< groups of 8 disparities, the last one padded

@@ -37,6 +37,12 @@ void WtaRangeSensorModel::Integrate(const WtaResult& wta, int min_disparity, int
     throw std::invalid_argument("WtaRangeSensorModel: disparity range [" + std::to_string(min_disparity) + ", " +
                                 std::to_string(max_disparity) + "] must start at 1 or more and not be inverted");
   }
+  // The range sizes per-row scratch of the update; a disparity as wide as the image has no match anyway.
+  if (max_disparity >= wta.disparity.cols) {
+    throw std::invalid_argument("WtaRangeSensorModel: max disparity " + std::to_string(max_disparity) +
+                                " is not below the image width " + std::to_string(wta.disparity.cols) +
+                                "; pass the disparity range the matcher searched");
+  }
   const int num_disp = max_disparity - min_disparity + 1;
   const double inverse_two_var = 1.0 / (2.0 * options_.sigma_disparity * options_.sigma_disparity);
   const double band = 8.0 * options_.sigma_disparity;

@@ -239,8 +239,9 @@ void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const
     std::vector<uint16_t> ring(row_size * window, 0);
     std::vector<int32_t> colsum(row_size, 0);
     std::vector<int32_t> acc(num_disp);
-    std::vector<float> right_value(wta != nullptr ? width : 0);
-    std::vector<int32_t> right_index(wta != nullptr ? width : 0);
+    const bool portable_wta = wta != nullptr && !fused_avx2;  // the AVX2 kernel keeps its own in `scratch`
+    std::vector<float> right_value(portable_wta ? width : 0);
+    std::vector<int32_t> right_index(portable_wta ? width : 0);
     auto slide_in = [&](int y) {
       const int yc = std::clamp(y, 0, height - 1);
       FillRow(left.ptr<uint8_t>(yc), right.ptr<uint8_t>(yc), width, dmin, num_disp, bt, &signals);

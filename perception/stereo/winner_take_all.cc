@@ -80,7 +80,7 @@ void WtaRowKernel(const float* row, int width, int num_disp, int dmin, bool subp
     });
     if (!(best_value < kInf)) best = -1;
     best_index[x] = best;
-    best_cost[x] = best_value;
+    best_cost[x] = best >= 0 ? c[best] : best_value;  // the zero at the first index if +0 and -0 both occur
     if (best < 0) {
       disparity[x] = kNaN;
       peak_ratio[x] = kInf;
@@ -97,7 +97,7 @@ void WtaRowKernel(const float* row, int width, int num_disp, int dmin, bool subp
     // and right of the winner: two reductions, so the winner needs no test per element.
     for (int k = 1; k < num_disp - 1; ++k) {
       const float v = c[k];
-      local[k] = v <= std::min(c[k - 1], c[k + 1]) ? v : kInf;
+      local[k] = (v <= c[k - 1]) & (v <= c[k + 1]) ? v : kInf;  // a NaN neighbour fails its comparison
     }
     second = LaneMin(1, std::max(1, best), second, [local](int k) { return local[k]; });
     second = LaneMin(std::max(1, best + 1), num_disp - 1, second, [local](int k) { return local[k]; });

@@ -37,7 +37,9 @@ struct WtaResult {
 };
 
 /// Computes the winner-take-all disparity of every pixel from `costs`. Infinite costs (disparities pointing
-/// outside the right image) never win. `result`'s matrices are reallocated only when their size changes.
+/// outside the right image) never win, nor do NaN costs (a volume filled by hand may hold them), and a NaN
+/// neighbour keeps a cost from being a local minimum. `result`'s matrices are reallocated only when their size
+/// changes.
 void ComputeWinnerTakeAll(const DisparityVolume& costs, const WtaOptions& options, WtaResult* result);
 
 }  // namespace cairn::perception

@@ -4,7 +4,9 @@
 // here each pixel's curve is handled once, from a small padded buffer in L1, eight disparities per instruction:
 // the minimum, its first index, the right view's running minima and the second-best local minimum are all
 // element-wise compares, selects and minima, so the results are the portable kernel's exactly (no arithmetic is
-// reordered; only exact minima are taken in a different order). The fused variant also aggregates the row's costs
+// reordered; only exact minima are taken in a different order, with the operands ordered so that a NaN cost is
+// passed over as std::min passes it over, and the reported cost is the one at the winning index, so that a
+// curve holding both +0 and -0 reports the same zero). The fused variant also aggregates the row's costs
 // from the column sums, so the cost volume is written once and never read back.
 
 #include <algorithm>
@@ -73,7 +75,8 @@ CAIRN_TARGET_AVX2 inline void WtaPixel(const float* c, int chunks, int num_disp,
   __m256 minimum = inf;
   for (int j = 0; j < chunks; ++j) {
     const __m256 v = _mm256_load_ps(c + 8 * j);
-    minimum = _mm256_min_ps(minimum, v);
+    // min(v, m) keeps m when v is NaN, as std::min(m, v) does in the portable kernel: NaN costs never win.
+    minimum = _mm256_min_ps(v, minimum);
     // Right view: the strict compare keeps the smallest k of a right column, since left columns arrive in order.
     const __m256 old_value = _mm256_loadu_ps(value + 8 * j);
     const __m256 better = _mm256_cmp_ps(v, old_value, _CMP_LT_OQ);
@@ -108,16 +111,17 @@ CAIRN_TARGET_AVX2 inline void WtaPixel(const float* c, int chunks, int num_disp,
   const int best_chunk = best >> 3;
   for (int j = 0; j < chunks; ++j) {
     const __m256 v = _mm256_load_ps(c + 8 * j);
-    const __m256 neighbours = _mm256_min_ps(_mm256_loadu_ps(c + 8 * j - 1), _mm256_loadu_ps(c + 8 * j + 1));
-    __m256 candidate = _mm256_blendv_ps(inf, v, _mm256_cmp_ps(v, neighbours, _CMP_LE_OQ));
+    const __m256 local = _mm256_and_ps(_mm256_cmp_ps(v, _mm256_loadu_ps(c + 8 * j - 1), _CMP_LE_OQ),
+                                       _mm256_cmp_ps(v, _mm256_loadu_ps(c + 8 * j + 1), _CMP_LE_OQ));
+    __m256 candidate = _mm256_blendv_ps(inf, v, local);
     if (j == best_chunk) {
       candidate = _mm256_blendv_ps(candidate, inf, _mm256_castsi256_ps(_mm256_cmpeq_epi32(lane, best_lane)));
     }
-    second = _mm256_min_ps(second, candidate);
+    second = _mm256_min_ps(candidate, second);
   }
   const float second_value = HorizontalMin(second);
   *best_index = best;
-  *best_cost = best_value;
+  *best_cost = c[best];  // not best_value: of +0 and -0, the one at the first index, whatever the reduction order
   if (!std::isfinite(second_value)) {
     *peak_ratio = kInf;
   } else if (best_value > 0.0f) {
@@ -198,7 +202,9 @@ CAIRN_TARGET_AVX2 void AggregateRowAndWinnerTakeAllAvx2(const int32_t* colsum, i
   auto column = [&](int x) { return colsum + static_cast<std::size_t>(std::clamp(x, 0, width - 1)) * num_disp; };
   for (int j = 0; j < chunks; ++j) {
     __m256i sum = _mm256_setzero_si256();
-    for (int x = -radius; x <= radius; ++x) sum = _mm256_add_epi32(sum, LoadSums(column(x), j, chunks, tail, tail_mask));
+    for (int x = -radius; x <= radius; ++x) {
+      sum = _mm256_add_epi32(sum, LoadSums(column(x), j, chunks, tail, tail_mask));
+    }
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(acc + 8 * j), sum);
   }
   for (int x = 0; x < width; ++x) {
@@ -211,7 +217,10 @@ CAIRN_TARGET_AVX2 void AggregateRowAndWinnerTakeAllAvx2(const int32_t* colsum, i
     float* o = costs + static_cast<std::size_t>(x) * num_disp;
     for (int j = 0; j < chunks; ++j) {
       __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(acc + 8 * j));
-      if (x > 0) a = _mm256_add_epi32(a, _mm256_sub_epi32(LoadSums(add, j, chunks, tail, tail_mask), LoadSums(sub, j, chunks, tail, tail_mask)));
+      if (x > 0) {
+        a = _mm256_add_epi32(a, _mm256_sub_epi32(LoadSums(add, j, chunks, tail, tail_mask),
+                                                 LoadSums(sub, j, chunks, tail, tail_mask)));
+      }
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(acc + 8 * j), a);
       const __m256i k = _mm256_add_epi32(lane, _mm256_set1_epi32(8 * j));
       const __m256i valid = _mm256_and_si256(_mm256_cmpgt_epi32(k, k_lo), _mm256_cmpgt_epi32(k_hi, k));

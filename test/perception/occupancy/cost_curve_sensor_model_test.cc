@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cairn/perception/occupancy/wta_range_sensor_model.h"
+#include "cairn/perception/stereo/winner_take_all.h"
 #include "expect_throws.h"
 
 namespace cairn::perception {
@@ -88,6 +90,13 @@ TEST(CostCurveSensorModelTest, RejectsBadInput) {
   CAIRN_EXPECT_THROWS_WITH(CostCurveSensorModel(options).Integrate(DisparityVolume(2, 2, 1, 5), StereoCalibration{},
                                                                   Eigen::Isometry3d::Identity(), &grid),
                            std::invalid_argument, "too close to 0 or 1");
+  // A WTA result's disparity range sizes the update's scratch: wider than the image is refused before any work.
+  WtaResult wta;
+  ComputeWinnerTakeAll(DisparityVolume(4, 8, 1, 5), WtaOptions{}, &wta);
+  const WtaRangeSensorModel wta_model(WtaRangeSensorModel::Options{});
+  CAIRN_EXPECT_THROWS_WITH(
+      wta_model.Integrate(wta, 1, 1 << 20, StereoCalibration{}, Eigen::Isometry3d::Identity(), &grid),
+      std::invalid_argument, "max disparity 1048576 is not below the image width 8");
 }
 
 }  // namespace

@@ -59,6 +59,31 @@ TEST(OccupancyGridTest, TraverseVisitsEveryCrossedCellInOrder) {
   EXPECT_EQ(cells.back(), grid.Index(Eigen::Vector3i(9, 5, 0)));
 }
 
+// A ray starting on a cell boundary (x = 1.7 with 0.1 m cells: the boundary computes as 1.7000000000000002) and
+// almost parallel to it: that boundary's t, about -2e-16 / 1e-20, lies far outside the fixed-point range (it was
+// converted out of range, undefined behaviour, before it was saturated) and behind the start.
+TEST(OccupancyGridTest, TraverseHandlesARayAlongACellBoundary) {
+  const OccupancyGrid grid(Eigen::Vector3d::Zero(), 0.1, Eigen::Vector3i(40, 40, 40));
+  std::vector<Eigen::Vector3i> cells;
+  double last_t = 0.0;
+  grid.Traverse(Eigen::Vector3d(1.7, 0.55, 0.05), Eigen::Vector3d(-1e-20, 0.0, 1.0), 0.0, 10.0,
+                [&](std::size_t index, double t_in, double t_out) {
+                  EXPECT_DOUBLE_EQ(t_in, last_t);
+                  EXPECT_GT(t_out, t_in);
+                  last_t = t_out;
+                  cells.push_back(grid.Cell(index));
+                  return true;
+                });
+  ASSERT_EQ(cells.size(), 40u);  // straight up through z = 0 .. 39
+  for (int z = 0; z < 40; ++z) {
+    EXPECT_EQ(cells[z].z(), z);
+    EXPECT_EQ(cells[z].y(), 5);
+    EXPECT_TRUE(cells[z].x() == 16 || cells[z].x() == 17) << cells[z].transpose();
+  }
+  EXPECT_NEAR(last_t, 3.95, 1e-9);
+  EXPECT_FALSE(grid.CastRay(Eigen::Vector3d(1.7, 0.55, 0.05), Eigen::Vector3d(-1e-20, 0.0, 1.0), 10.0));
+}
+
 // Through an edge (two boundaries at once) or a corner (three), the cells the ray only touches are not visited.
 TEST(OccupancyGridTest, TraverseSkipsCellsTouchedOnlyAtAnEdgeOrCorner) {
   OccupancyGrid grid(Eigen::Vector3d::Zero(), 1.0, Eigen::Vector3i(4, 4, 4));

@@ -131,23 +131,23 @@ TEST(ComputeCostVolumeTest, OnePassWinnerTakeAllMatchesTheTwoCalls) {
   const std::pair<int, int> ranges[] = {{1, 14}, {-3, 12}, {0, 7}, {2, 2}, {0, 40}};
   for (CostFunction cost : {CostFunction::kSsd, CostFunction::kBtSad}) {
     for (int threads : {1, 3}) {
-     for (const auto& [dmin, dmax] : ranges) {
-      SCOPED_TRACE("threads " + std::to_string(threads) + " range [" + std::to_string(dmin) + ", " +
-                   std::to_string(dmax) + "]");
-      CostVolumeOptions options;
-      options.cost = cost;
-      options.window = 5;
-      options.min_disparity = dmin;
-      options.max_disparity = dmax;
-      options.num_threads = threads;
-      DisparityVolume separate_costs, fused_costs;
-      WtaResult separate, fused;
-      ComputeCostVolume(left, right, options, &separate_costs);
-      ComputeWinnerTakeAll(separate_costs, WtaOptions{}, &separate);
-      ComputeCostVolumeAndWinnerTakeAll(left, right, options, WtaOptions{}, &fused_costs, &fused);
-      EXPECT_TRUE(fused_costs.data() == separate_costs.data());
-      EXPECT_TRUE(SameWtaResult(fused, separate));
-     }
+      for (const auto& [dmin, dmax] : ranges) {
+        SCOPED_TRACE("threads " + std::to_string(threads) + " range [" + std::to_string(dmin) + ", " +
+                     std::to_string(dmax) + "]");
+        CostVolumeOptions options;
+        options.cost = cost;
+        options.window = 5;
+        options.min_disparity = dmin;
+        options.max_disparity = dmax;
+        options.num_threads = threads;
+        DisparityVolume separate_costs, fused_costs;
+        WtaResult separate, fused;
+        ComputeCostVolume(left, right, options, &separate_costs);
+        ComputeWinnerTakeAll(separate_costs, WtaOptions{}, &separate);
+        ComputeCostVolumeAndWinnerTakeAll(left, right, options, WtaOptions{}, &fused_costs, &fused);
+        EXPECT_TRUE(fused_costs.data() == separate_costs.data());
+        EXPECT_TRUE(SameWtaResult(fused, separate));
+      }
     }
   }
   CostVolumeOptions options;
@@ -167,7 +167,8 @@ TEST(ComputeCostVolumeTest, RejectsBadInput) {
   const cv::Mat a = RandomImage(10, 20, 1);
   CAIRN_EXPECT_THROWS_WITH(ComputeCostVolume(a, RandomImage(10, 21, 1), options, &volume), std::invalid_argument,
                            "20x10", "21x10", "equal size");
-  CAIRN_EXPECT_THROWS_WITH(ComputeCostVolume(cv::Mat(), a, options, &volume), std::invalid_argument, "left image is empty");
+  CAIRN_EXPECT_THROWS_WITH(ComputeCostVolume(cv::Mat(), a, options, &volume), std::invalid_argument,
+                           "left image is empty");
   cv::Mat floats(10, 20, CV_32F);
   CAIRN_EXPECT_THROWS_WITH(ComputeCostVolume(floats, a, options, &volume), std::invalid_argument, "CV_8UC1");
   options.max_disparity = 25;

@@ -1,6 +1,6 @@
 // The AVX2 winner-take-all row kernel against the portable one, on curves built to stress the vector code: many
-// ties (small integer costs), infinite costs anywhere, disparity counts that do and do not fill groups of 8, and
-// negative disparities.
+// ties (small integer costs), infinite and NaN costs anywhere, +0 and -0, disparity counts that do and do not
+// fill groups of 8, and negative disparities.
 
 #include <cmath>
 #include <limits>
@@ -36,9 +36,13 @@ TEST(WinnerTakeAllAvx2Test, MatchesThePortableKernelByteForByte) {
           for (int k = 0; k < num_disp; ++k) {
             const int xr = x - (dmin + k);
             const bool outside = xr < 0 || xr >= width;
-            // Mostly ties, some real-valued costs (sub-pixel offsets), some stray infinities inside the image.
+            // Mostly ties, some real-valued costs (sub-pixel offsets), some stray infinities and NaNs inside the
+            // image (a user's volume may hold anything), and negative zeros tying with positive ones.
             float c = uniform(rng) < 0.2f ? value(rng) + uniform(rng) : static_cast<float>(value(rng));
-            if (uniform(rng) < 0.05f) c = kInf;
+            const float draw = uniform(rng);
+            if (draw < 0.05f) c = kInf;
+            if (draw > 0.95f) c = std::numeric_limits<float>::quiet_NaN();
+            if (c == 0.0f && uniform(rng) < 0.5f) c = -0.0f;
             costs.mutable_curve(y, x)[k] = outside ? kInf : c;
           }
       WtaOptions options;
