@@ -5,13 +5,20 @@
 
 #include <algorithm>
 #include <exception>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
 namespace cairn::perception::internal {
 
-/// Resolves a user's thread count: 0 means one thread per hardware core (at least one).
+/// Resolves a user's thread count: 0 means one thread per hardware core (at least one). Throws
+/// std::invalid_argument for a negative count (it used to mean "all cores" silently).
 inline int ResolveThreadCount(int requested) {
+  if (requested < 0) {
+    throw std::invalid_argument("num_threads " + std::to_string(requested) +
+                                " is negative; use 0 for one thread per core, or a positive count");
+  }
   if (requested > 0) return requested;
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }

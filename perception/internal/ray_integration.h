@@ -418,7 +418,11 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
   }
   const double max_log_odds = std::max(std::abs(std::log(options.min_probability / (1.0 - options.min_probability))),
                                       std::abs(std::log(options.max_probability / (1.0 - options.max_probability))));
-  if (!(max_log_odds < PackedLogOdds::kMaxLogOdds)) {
+  // The per-ray arithmetic is in float: a limit that rounds to 0 or 1 there would give infinite log-odds.
+  const float float_min = static_cast<float>(options.min_probability);
+  const float float_max = static_cast<float>(options.max_probability);
+  if (!(max_log_odds < PackedLogOdds::kMaxLogOdds) || !(float_min > 0.0f) || !(float_max < 1.0f) ||
+      !(float_max / (1.0f - float_max) < std::numeric_limits<float>::infinity())) {
     throw std::invalid_argument("occupancy update: probability limits [" + std::to_string(options.min_probability) +
                                 ", " + std::to_string(options.max_probability) +
                                 "] are too close to 0 or 1; use limits like [0.12, 0.97]");

@@ -38,6 +38,14 @@ void CostVolumeOptions::Validate(int image_width) const {
                                 " must be odd and positive (the pixel sits at its centre); use e.g. " +
                                 std::to_string(window < 1 ? 5 : window + 1));
   }
+  // Window sums are exact 32-bit integers: window^2 times the largest pixel cost (SSD 255^2, BTSAD 510 in doubled
+  // units) must stay below 2^31.
+  const int max_window = cost == CostFunction::kSsd ? 181 : 2051;
+  if (window > max_window) {
+    throw std::invalid_argument("stereo window " + std::to_string(window) + " is larger than " +
+                                std::to_string(max_window) + ", beyond which " + CostFunctionName(cost) +
+                                " window sums overflow; use a smaller window");
+  }
   if (max_disparity < min_disparity) {
     throw std::invalid_argument("max disparity " + std::to_string(max_disparity) + " is below min disparity " +
                                 std::to_string(min_disparity) + "; swap them");

@@ -53,7 +53,8 @@ struct CostVolumeOptions {
   int num_threads{0};
 
   /// Checks the options against an image width; throws std::invalid_argument naming the bad value and the fix
-  /// (even or non-positive window, inverted range, a range wider than the image, bad prefilter settings).
+  /// (even or non-positive window, a window whose sums would overflow, inverted range, a range wider than the
+  /// image, bad prefilter settings, negative threads).
   void Validate(int image_width) const;
 };
 

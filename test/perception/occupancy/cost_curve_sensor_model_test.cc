@@ -90,6 +90,11 @@ TEST(CostCurveSensorModelTest, RejectsBadInput) {
   CAIRN_EXPECT_THROWS_WITH(CostCurveSensorModel(options).Integrate(DisparityVolume(2, 2, 1, 5), StereoCalibration{},
                                                                   Eigen::Isometry3d::Identity(), &grid),
                            std::invalid_argument, "too close to 0 or 1");
+  options.min_probability = 0.12;
+  options.max_probability = 0.99999999;  // a valid double, but 1.0f in the update's float arithmetic
+  CAIRN_EXPECT_THROWS_WITH(CostCurveSensorModel(options).Integrate(DisparityVolume(2, 2, 1, 5), StereoCalibration{},
+                                                                  Eigen::Isometry3d::Identity(), &grid),
+                           std::invalid_argument, "too close to 0 or 1");
   // A WTA result's disparity range sizes the update's scratch: wider than the image is refused before any work.
   WtaResult wta;
   ComputeWinnerTakeAll(DisparityVolume(4, 8, 1, 5), WtaOptions{}, &wta);

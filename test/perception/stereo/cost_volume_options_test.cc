@@ -21,6 +21,15 @@ TEST(CostVolumeOptionsTest, ValidateNamesTheBadValue) {
   EXPECT_NO_THROW(options.Validate(640));
   options.window = 8;
   CAIRN_EXPECT_THROWS_WITH(options.Validate(640), std::invalid_argument, "window 8", "odd", "use e.g. 9");
+  // Window sums are exact int32: an SSD window of 183 could overflow (183^2 * 255^2 > 2^31); BTSAD's can be larger.
+  options.cost = CostFunction::kSsd;
+  options.window = 183;
+  CAIRN_EXPECT_THROWS_WITH(options.Validate(640), std::invalid_argument, "window 183 is larger than 181", "ssd");
+  options.window = 181;
+  EXPECT_NO_THROW(options.Validate(640));
+  options.cost = CostFunction::kBtSad;
+  options.window = 183;
+  EXPECT_NO_THROW(options.Validate(640));
   options.window = 9;
   options.max_disparity = 700;
   CAIRN_EXPECT_THROWS_WITH(options.Validate(640), std::invalid_argument, "wider than the image (640 px)");

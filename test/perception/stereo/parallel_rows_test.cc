@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "cairn/perception/internal/parallel_rows.h"
+#include "cairn/perception/stereo/winner_take_all.h"
 #include "expect_throws.h"
 
 namespace cairn::perception {
@@ -48,6 +49,19 @@ TEST(ParallelRowsTest, ExceptionsReachTheCallerAfterEveryBandFinishes) {
                                                        if (t == 0) throw std::invalid_argument("caller's band");
                                                      }),
                            std::invalid_argument, "caller's band");
+}
+
+TEST(ParallelRowsTest, ANegativeThreadCountIsAnError) {
+  EXPECT_EQ(internal::ResolveThreadCount(3), 3);
+  EXPECT_GE(internal::ResolveThreadCount(0), 1);
+  CAIRN_EXPECT_THROWS_WITH(internal::ResolveThreadCount(-2), std::invalid_argument, "num_threads -2 is negative");
+  // Through a public entry point that used to read -1 as "all cores".
+  DisparityVolume costs(2, 4, 0, 1);
+  WtaOptions options;
+  options.num_threads = -1;
+  WtaResult result;
+  CAIRN_EXPECT_THROWS_WITH(ComputeWinnerTakeAll(costs, options, &result), std::invalid_argument,
+                           "num_threads -1 is negative");
 }
 
 }  // namespace
