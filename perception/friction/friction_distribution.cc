@@ -1,4 +1,5 @@
 #include "cairn/perception/friction/friction_distribution.h"
+#include "cairn/common/number_text.h"
 
 #include <cmath>
 #include <limits>
@@ -13,16 +14,10 @@ constexpr double kInvSqrt2Pi = 0.39894228040143267794;
 // Euler–Mascheroni constant, for the GEV mean with shape 0.
 constexpr double kEulerGamma = 0.57721566490153286061;
 
-std::string Num(double x) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", x);
-  return text;
-}
-
 void CheckFinite(const char* what, double value) {
   if (!std::isfinite(value)) {
-    throw std::invalid_argument(std::string("Friction distribution: ") + what + " must be finite; got " + Num(value) +
-                                ".");
+    throw std::invalid_argument(std::string("Friction distribution: ") + what + " must be finite; got " +
+                                FormatShort(value) + ".");
   }
 }
 
@@ -32,7 +27,7 @@ double StandardNormalCdf(double x) { return 0.5 * std::erfc(-x * kInvSqrt2); }
 
 double StandardNormalQuantile(double p) {
   if (!(p > 0.0 && p < 1.0)) {
-    throw std::invalid_argument("StandardNormalQuantile: p must be in (0, 1); got " + Num(p) + ".");
+    throw std::invalid_argument("StandardNormalQuantile: p must be in (0, 1); got " + FormatShort(p) + ".");
   }
   // Acklam's rational approximation (relative error 1.15e-9) ...
   static const double a[] = {-3.969683028665376e+01, 2.209460984245205e+02, -2.759285104469687e+02,
@@ -69,8 +64,8 @@ FrictionDistribution FrictionDistribution::Normal(double mean, double stddev) {
   CheckFinite("the mean", mean);
   CheckFinite("the standard deviation", stddev);
   if (stddev < 0.0) {
-    throw std::invalid_argument("Friction distribution: the standard deviation must be >= 0; got " + Num(stddev) +
-                                ".");
+    throw std::invalid_argument("Friction distribution: the standard deviation must be >= 0; got " +
+                                FormatShort(stddev) + ".");
   }
   return FrictionDistribution(Kind::kNormal, mean, stddev, 0.0);
 }
@@ -80,11 +75,11 @@ FrictionDistribution FrictionDistribution::TruncatedNormal(double mean, double s
   CheckFinite("the standard deviation", stddev);
   if (!(stddev > 0.0)) {
     throw std::invalid_argument("Friction distribution: a truncated normal needs a standard deviation > 0; got " +
-                                Num(stddev) + ".");
+                                FormatShort(stddev) + ".");
   }
   if (StandardNormalCdf(mean / stddev) < 1e-12) {
-    throw std::invalid_argument("Friction distribution: a normal with mean " + Num(mean) + " and deviation " +
-                                Num(stddev) + " has no mass on [0, inf) to truncate to; raise the mean.");
+    throw std::invalid_argument("Friction distribution: a normal with mean " + FormatShort(mean) + " and deviation " +
+                                FormatShort(stddev) + " has no mass on [0, inf) to truncate to; raise the mean.");
   }
   return FrictionDistribution(Kind::kTruncatedNormal, mean, stddev, 0.0);
 }
@@ -94,7 +89,7 @@ FrictionDistribution FrictionDistribution::GeneralizedExtremeValue(double locati
   CheckFinite("the scale", scale);
   CheckFinite("the shape", shape);
   if (!(scale > 0.0)) {
-    throw std::invalid_argument("Friction distribution: the GEV scale must be > 0; got " + Num(scale) + ".");
+    throw std::invalid_argument("Friction distribution: the GEV scale must be > 0; got " + FormatShort(scale) + ".");
   }
   return FrictionDistribution(Kind::kGeneralizedExtremeValue, location, scale, shape);
 }
@@ -162,7 +157,7 @@ double FrictionDistribution::Pdf(double mu) const {
 
 double FrictionDistribution::Quantile(double p) const {
   if (!(p > 0.0 && p < 1.0)) {
-    throw std::invalid_argument("FrictionDistribution::Quantile: p must be in (0, 1); got " + Num(p) + ".");
+    throw std::invalid_argument("FrictionDistribution::Quantile: p must be in (0, 1); got " + FormatShort(p) + ".");
   }
   switch (kind_) {
     case Kind::kNormal:

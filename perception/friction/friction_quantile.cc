@@ -1,20 +1,14 @@
 #include "cairn/perception/friction/friction_quantile.h"
+#include "cairn/common/number_text.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace cairn::perception {
 namespace {
-
-std::string Short(double x) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", x);
-  return text;
-}
 
 // No coefficient of friction of a walkable surface comes near this; a search reaching it means the mixture is
 // malformed (e.g. a GEV with a heavy upper tail at the quantile asked for).
@@ -34,7 +28,7 @@ double SearchQuantile(const MaterialRegistry& registry, const Eigen::Ref<const E
   for (long k = 0;; ++k) {
     const double mu = static_cast<double>(k) * step;
     if (mu > kMaxFriction) {
-      throw std::invalid_argument("Friction quantile search passed mu = " + Short(kMaxFriction) +
+      throw std::invalid_argument("Friction quantile search passed mu = " + FormatShort(kMaxFriction) +
                                   " without reaching the quantile; check the registry's distributions.");
     }
     if (Cdf(registry, p, mu) > target) return quantile;
@@ -76,10 +70,10 @@ double GaussianQuantile(const MaterialRegistry& registry, const Eigen::Ref<const
 void CheckArguments(double eta, double tolerance) {
   if (!(eta > 0.0 && eta < 1.0)) {
     throw std::invalid_argument("eta (the probability that friction is at least the quantile) must be in (0, 1); "
-                                "got " + Short(eta) + ". The thesis uses 0.95.");
+                                "got " + FormatShort(eta) + ". The thesis uses 0.95.");
   }
   if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
-    throw std::invalid_argument("The quantile tolerance must be finite and > 0; got " + Short(tolerance) + ".");
+    throw std::invalid_argument("The quantile tolerance must be finite and > 0; got " + FormatShort(tolerance) + ".");
   }
 }
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <string>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/cairn_assert.h"
 #include "cairn/perception/internal/multiversion.h"
 #include "cairn/perception/internal/parallel_rows.h"
@@ -23,12 +23,6 @@ namespace cairn::perception {
 namespace {
 
 constexpr double kExactStep = 1.0 / 2048.0;
-
-std::string Short(double x) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", x);
-  return text;
-}
 
 // The validation's rule for a pixel's sum, shared by the fast check and the message naming the bad pixel.
 inline bool SumIsOne(float sum) { return std::abs(sum - 1.0f) <= 1e-3f; }
@@ -392,11 +386,11 @@ FrictionQuantileImage::FrictionQuantileImage(const MaterialRegistry& registry, c
     : options_(options), num_labels_(registry.size()), avx2_(Avx2Available()) {
   if (!(options.eta > 0.0 && options.eta < 1.0)) {
     throw std::invalid_argument("eta (the probability that friction is at least the quantile) must be in (0, 1); "
-                                "got " + Short(options.eta) + ".");
+                                "got " + FormatShort(options.eta) + ".");
   }
   if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance)) {
-    throw std::invalid_argument("The quantile search step must be finite and > 0; got " + Short(options.tolerance) +
-                                ".");
+    throw std::invalid_argument("The quantile search step must be finite and > 0; got " +
+                                FormatShort(options.tolerance) + ".");
   }
   if (num_labels_ == 0) throw std::invalid_argument("FrictionQuantileImage: the material registry is empty.");
   const double target = 1.0 - options.eta;
@@ -561,7 +555,7 @@ std::string FrictionQuantileImage::DescribeFirstBadPixel(const float* row, int r
   }
   CAIRN_CHECK(c < cols);  // The validation pass rejected the row, so one of its pixels is bad.
   return "The material probabilities at pixel (" + std::to_string(r) + ", " + std::to_string(c) + ") " +
-         (in_range ? "sum to " + Short(sum) + ", not 1" : std::string("leave [0, 1]")) +
+         (in_range ? "sum to " + FormatShort(sum) + ", not 1" : std::string("leave [0, 1]")) +
          "; normalise them (e.g. with a softmax).";
 }
 

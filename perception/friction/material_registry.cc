@@ -3,29 +3,17 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <cstdio>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/atomic_file.h"
 #include "cairn/common/text_suggestions.h"
 
 namespace cairn::perception {
 namespace {
-
-std::string Num(double x) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.17g", x);
-  return text;
-}
-
-std::string Short(double x) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", x);
-  return text;
-}
 
 // The posterior of μ ~ N(m, s²) after one observation, and the observation's likelihood under N(m, s²).
 struct Posterior {
@@ -122,13 +110,13 @@ void MaterialRegistry::ValidateProbabilities(const Eigen::Ref<const Eigen::Vecto
   for (int i = 0; i < size(); ++i) {
     const double p = probabilities[i];
     if (!(p >= 0.0 && p <= 1.0)) {
-      throw std::invalid_argument("The probability of '" + materials_[i].label + "' is " + Short(p) +
+      throw std::invalid_argument("The probability of '" + materials_[i].label + "' is " + FormatShort(p) +
                                   "; probabilities must be in [0, 1].");
     }
     sum += p;
   }
   if (std::abs(sum - 1.0) > 1e-6) {
-    throw std::invalid_argument("Material probabilities sum to " + Num(sum) +
+    throw std::invalid_argument("Material probabilities sum to " + FormatExact(sum) +
                                 ", not 1; normalise them (e.g. apply a softmax to the segmenter's scores).");
   }
 }
@@ -139,8 +127,8 @@ Eigen::VectorXd MaterialRegistry::UpdateFromContact(const Eigen::Ref<const Eigen
   if (!std::isfinite(observation.value) ||
       (observation.kind == ContactObservation::Kind::kMeasured && !(observation.stddev > 0.0))) {
     throw std::invalid_argument("UpdateFromContact: the observation needs a finite value (got " +
-                                Short(observation.value) + ") and, when measured, a noise stddev > 0 (got " +
-                                Short(observation.stddev) + ").");
+                                FormatShort(observation.value) + ") and, when measured, a noise stddev > 0 (got " +
+                                FormatShort(observation.stddev) + ").");
   }
   const int n = size();
   std::vector<Posterior> posteriors(n, Posterior{0.0, 0.0, 0.0});
@@ -169,7 +157,8 @@ Eigen::VectorXd MaterialRegistry::UpdateFromContact(const Eigen::Ref<const Eigen
   const double evidence = responsibility.sum();
   if (!(evidence > 0.0)) {
     throw std::invalid_argument("UpdateFromContact: no material with nonzero probability can explain the observation "
-                                "(value " + Short(observation.value) + "); check the probabilities at the contact.");
+                                "(value " + FormatShort(observation.value) +
+                                "); check the probabilities at the contact.");
   }
   responsibility /= evidence;
   for (int i = 0; i < n; ++i) {
@@ -196,10 +185,11 @@ void MaterialRegistry::SaveYaml(const std::string& path) const {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "label" << YAML::Value << material.label;
     out << YAML::Key << "distribution" << YAML::Value << f.kind_name();
     if (f.kind() == FrictionDistribution::Kind::kNormal || f.kind() == FrictionDistribution::Kind::kTruncatedNormal) {
-      out << YAML::Key << "mean" << YAML::Value << Num(f.a()) << YAML::Key << "stddev" << YAML::Value << Num(f.b());
+      out << YAML::Key << "mean" << YAML::Value << FormatExact(f.a()) << YAML::Key << "stddev" << YAML::Value
+          << FormatExact(f.b());
     } else if (f.kind() == FrictionDistribution::Kind::kGeneralizedExtremeValue) {
-      out << YAML::Key << "location" << YAML::Value << Num(f.a()) << YAML::Key << "scale" << YAML::Value << Num(f.b())
-          << YAML::Key << "shape" << YAML::Value << Num(f.c());
+      out << YAML::Key << "location" << YAML::Value << FormatExact(f.a()) << YAML::Key << "scale" << YAML::Value
+          << FormatExact(f.b()) << YAML::Key << "shape" << YAML::Value << FormatExact(f.c());
     }
     if (material.num_contacts > 0) out << YAML::Key << "contacts" << YAML::Value << material.num_contacts;
     out << YAML::EndMap;

@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/atomic_file.h"
 
 namespace cairn::planning {
@@ -26,18 +27,6 @@ constexpr const char* kMagic = "cairn-transition-oracle 1";
 constexpr int kDoublesPerEntry = 9;
 // Lookups match a single-valued axis, and the grid's ends, within this distance.
 constexpr double kAxisTolerance = 1e-9;
-
-std::string Num(double x) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.17g", x);
-  return text;
-}
-
-std::string Short(double x) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", x);
-  return text;
-}
 
 std::string Hex(std::uint64_t x) {
   char text[24];
@@ -96,22 +85,23 @@ void ValidateAxis(const std::vector<double>& axis, const char* name, double lo, 
     }
     if (i > 0 && !(v > axis[i - 1])) {
       throw std::invalid_argument(std::string("OracleGrid: axis '") + name + "' is not strictly increasing at value " +
-                                  Short(v) + " (after " + Short(axis[i - 1]) + "); sort it and remove duplicates.");
+                                  FormatShort(v) + " (after " + FormatShort(axis[i - 1]) +
+                                  "); sort it and remove duplicates.");
     }
     if (positive && !(v > 0.0)) {
-      throw std::invalid_argument(std::string("OracleGrid: axis '") + name + "' value " + Short(v) +
+      throw std::invalid_argument(std::string("OracleGrid: axis '") + name + "' value " + FormatShort(v) +
                                   " must be positive.");
     }
     if (v < lo - 1e-12 || v > hi + 1e-12) {
-      throw std::invalid_argument(std::string("OracleGrid: axis '") + name + "' value " + Short(v) +
-                                  " is outside the robot's reach [" + Short(lo) + ", " + Short(hi) + "].");
+      throw std::invalid_argument(std::string("OracleGrid: axis '") + name + "' value " + FormatShort(v) +
+                                  " is outside the robot's reach [" + FormatShort(lo) + ", " + FormatShort(hi) + "].");
     }
   }
 }
 
 std::string AxisLine(const char* name, const std::vector<double>& axis) {
   std::string line = std::string(name) + " " + std::to_string(axis.size());
-  for (double v : axis) line += " " + Num(v);
+  for (double v : axis) line += " " + FormatExact(v);
   return line + "\n";
 }
 
@@ -380,7 +370,7 @@ std::size_t TransitionOracle::num_feasible() const {
 
 TransitionCost TransitionOracle::DoEvaluate(const StepDisplacement& d, double mu_allowed) const {
   if (!(mu_allowed >= 0.0)) {
-    throw std::invalid_argument("TransitionOracle: mu_allowed is " + Short(mu_allowed) +
+    throw std::invalid_argument("TransitionOracle: mu_allowed is " + FormatShort(mu_allowed) +
                                 "; it must be a friction coefficient >= 0 (0 means not walkable).");
   }
   if (!std::isfinite(d.dx) || !std::isfinite(d.dy) || !std::isfinite(d.dz) || !std::isfinite(d.dtheta)) {
