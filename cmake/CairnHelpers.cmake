@@ -10,15 +10,22 @@ if(CAIRN_WARNINGS_AS_ERRORS)
   list(APPEND CAIRN_WARNING_FLAGS -Werror)
 endif()
 
+# cairn_expose_module(<module> [PRIVATE_FOLDERS <folder>...])
 # Exposes a top-level source folder (systems, optimization, ...) under <cairn/...> in the build tree and
-# installs its headers under include/cairn/.
+# installs its headers under include/cairn/, except those in PRIVATE_FOLDERS (headers that only the module's and
+# other modules' .cc files include, such as common/internal/, which includes yaml-cpp).
 function(cairn_expose_module module)
+  cmake_parse_arguments(ARG "" "" "PRIVATE_FOLDERS" ${ARGN})
   set(link "${CAIRN_BUILD_INCLUDE_DIR}/cairn/${module}")
   if(NOT EXISTS "${link}")
     file(CREATE_LINK "${PROJECT_SOURCE_DIR}/${module}" "${link}" SYMBOLIC)
   endif()
+  set(excludes)
+  foreach(folder ${ARG_PRIVATE_FOLDERS})
+    list(APPEND excludes PATTERN "${folder}" EXCLUDE)
+  endforeach()
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${module}/" DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cairn/${module}
-    FILES_MATCHING PATTERN "*.h")
+    FILES_MATCHING PATTERN "*.h" ${excludes})
 endfunction()
 
 # cairn_add_library(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
