@@ -13,8 +13,8 @@ namespace cairn {
 inline constexpr int kMaxThreads = 256;
 
 /// The one thread-count rule: 0 means one thread per hardware core (at least one, at most kMaxThreads);
-/// 1..kMaxThreads are used as given. Throws std::invalid_argument for a negative count (it once meant "all cores" silently) or one above
-/// kMaxThreads, naming the value and the rule.
+/// 1..kMaxThreads are used as given. Throws std::invalid_argument for a negative count (it once meant "all
+/// cores" silently) or one above kMaxThreads, naming the value and the rule.
 int ResolveThreadCount(int num_threads);
 
 /// What a band runs: body(band, begin, end) handles the indices [begin, end) of band number `band`.
