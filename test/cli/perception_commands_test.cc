@@ -88,7 +88,7 @@ TEST(PerceptionCommandsTest, OccupancyBadInputExitsWithOneOrTwo) {
   EXPECT_THAT(model.output, HasSubstr("unknown occupancy model 'gaussian'"));
   const CairnRun scenario = RunCairn("occupancy --scenario /no/such.yaml --frames 1");
   EXPECT_EQ(scenario.exit_code, 1);
-  EXPECT_THAT(scenario.output, HasSubstr("'/no/such.yaml' cannot be read"));
+  EXPECT_THAT(scenario.output, HasSubstr("Cannot read '/no/such.yaml'"));
   const CairnRun frames = RunCairn("occupancy --frames 0");
   EXPECT_EQ(frames.exit_code, 1);
   EXPECT_THAT(frames.output, HasSubstr("0 frames"));
