@@ -13,14 +13,13 @@
 #include "cairn/optimization/function_evaluator.h"
 #include "cairn/optimization/solvers/ipopt_solver.h"
 #include "../test_problems.h"
-#include "../throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
 using Eigen::Ref;
 using Eigen::VectorXd;
-using test::MessageOf;
 using ::testing::HasSubstr;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -190,8 +189,8 @@ TEST(LeastSquaresSolverTest, RejectsProgramsItCannotSolve) {
                         "AddLeastSquaresCost, or use 'ipopt'"));
   MathematicalProgram prog;
   const auto x = prog.NewContinuousVariables(2, "x");
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] { LeastSquaresSolver().Solve(prog); }),
-              HasSubstr("the program has no least-squares costs"));
+  CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(prog), std::invalid_argument,
+                           "the program has no least-squares costs");
   prog.AddLeastSquaresCost(std::make_shared<FunctionEvaluator>(
                                "identity", 2, 2,
                                [](const Ref<const VectorXd>& v, Ref<VectorXd> r) { r = v; }),
@@ -207,14 +206,13 @@ TEST(LeastSquaresSolverTest, RejectsUnknownOptions) {
   const test::TestProblem p = test::MakeChainedRosenbrock(4);
   SolverOptions typo;
   typo.Set("least_squares", "max_iteration", 5);
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), typo); }),
-              HasSubstr("unknown option 'max_iteration' (did you mean 'max_iterations'?)"));
+  CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), typo), std::invalid_argument,
+                           "unknown option 'max_iteration' (did you mean 'max_iterations'?)");
   SolverOptions bad_algorithm;
   bad_algorithm.Set("least_squares", "algorithm", "dogleg");
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), bad_algorithm); }),
-              HasSubstr("option 'algorithm' = 'dogleg' is not valid; use 'levenberg_marquardt' or 'gauss_newton'"));
+  CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), bad_algorithm),
+                           std::invalid_argument,
+                           "option 'algorithm' = 'dogleg' is not valid; use 'levenberg_marquardt' or 'gauss_newton'");
   SolverOptions limit;
   limit.Set("least_squares", "max_iterations", 2);
   const SolverResult limited = LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), limit);
