@@ -12,8 +12,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cairn/common/atomic_file.h"
-#include "cairn/perception/friction/material_scene.h"
-#include "cairn/perception/friction/stereo_material_scene.h"
+#include "cairn/perception/synthetic/material_scene.h"
+#include "cairn/perception/synthetic/stereo_material_scene.h"
 #include "command_registry.h"
 
 namespace cairn::cli {

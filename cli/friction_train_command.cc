@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "cairn/perception/evaluation/material_segmentation_score.h"
 #include "cairn/perception/friction/builtin_material_segmenter.h"
-#include "cairn/perception/friction/material_scene.h"
-#include "cairn/perception/friction/material_segmentation_score.h"
-#include "cairn/perception/friction/stereo_material_scene.h"
+#include "cairn/perception/synthetic/material_scene.h"
+#include "cairn/perception/synthetic/stereo_material_scene.h"
 #include "command_registry.h"
 
 namespace cairn::cli {

@@ -8,15 +8,15 @@
 #include <string>
 #include <vector>
 
-#include "cairn/perception/occupancy/bars_scenario.h"
+#include "cairn/perception/evaluation/occupancy_score.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
-#include "cairn/perception/occupancy/occupancy_scenario.h"
-#include "cairn/perception/occupancy/occupancy_score.h"
 #include "cairn/perception/occupancy/wta_range_sensor_model.h"
 #include "cairn/perception/stereo/compute_confidence.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
-#include "cairn/perception/stereo/synthetic_stereo_renderer.h"
+#include "cairn/perception/synthetic/bars_scenario.h"
+#include "cairn/perception/synthetic/occupancy_scenario.h"
+#include "cairn/perception/synthetic/synthetic_stereo_renderer.h"
 #include "command_registry.h"
 
 namespace cairn::cli {

@@ -10,12 +10,12 @@
 #include <string>
 
 #include "cairn/common/atomic_file.h"
-#include "cairn/planning/footstep/footstep_scenario.h"
 #include "cairn/planning/footstep/plan_footsteps.h"
 #include "cairn/planning/footstep/refine_footstep_plan.h"
 #include "cairn/planning/locomotion/transition_oracle.h"
 #include "cairn/planning/locomotion/walking_model.h"
 #include "cairn/planning/locomotion/walking_objective.h"
+#include "cairn/planning/scenarios/footstep_scenario.h"
 #include "command_registry.h"
 #include "json.h"
 #include "plan_image.h"

@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "cairn/perception/evaluation/middlebury_pair.h"
+#include "cairn/perception/evaluation/stereo_evaluation.h"
 #include "cairn/perception/stereo/compute_confidence.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
-#include "cairn/perception/stereo/middlebury_pair.h"
-#include "cairn/perception/stereo/stereo_evaluation.h"
 #include "cairn/perception/stereo/winner_take_all.h"
 #include "command_registry.h"
 

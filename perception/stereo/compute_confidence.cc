@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "cairn/common/cairn_assert.h"
-#include "cairn/perception/internal/fast_exp.h"
 #include "cairn/perception/internal/parallel_rows.h"
+#include "cairn/perception/stereo/internal/fast_exp.h"
 
 namespace cairn::perception {
 
