@@ -269,6 +269,9 @@ void UrdfXmlCheck::CheckSizeAndNesting(const std::string& xml) const {
 }
 
 void UrdfXmlCheck::CheckDocument(const std::string& xml) const {
+  if (std::all_of(xml.begin(), xml.end(), IsSpace)) {
+    Fail("the text is empty; a URDF file holds a <robot name=...> element");
+  }
   TiXmlDocument document;
   document.Parse(xml.c_str());
   if (document.Error()) {

@@ -122,6 +122,7 @@ TEST(UrdfParserTest, MalformedXmlIsReported) {
   ExpectThrowWithMessage<std::runtime_error>([] { ParseArm("<robot name=\"arm\">\n<link name=\"a\"></robot>"); },
                                              {"arm.urdf", "malformed XML at line 2"});
   ExpectThrowWithMessage<std::runtime_error>([] { ParseArm("<robt name=\"arm\"/>"); }, {"arm.urdf", "<robot"});
+  CAIRN_EXPECT_THROWS_WITH(ParseArm(" \n\t"), std::runtime_error, "arm.urdf: the text is empty");
 }
 
 TEST(UrdfParserTest, NegativeMassIsReported) {
