@@ -66,9 +66,10 @@ void RegisterPendulumCommand(CommandRegistry* registry) {
                     if (!csv->empty()) CheckOutputFile("--csv", *csv);
                     const examples::PendulumRun run = examples::RunPendulumExample(*options, *csv);
                     if (!run.final_state.allFinite()) {
-                      throw std::runtime_error("the simulation diverged (the state is not finite at t = " +
-                                               FormatShort(run.final_time) +
-                                               " s); lower --max-step or the gains, or use --integrator rk45");
+                      throw std::runtime_error(
+                          "the simulation diverged (the state is not finite at t = " + FormatShort(run.final_time) +
+                          " s); lower --max-step or the gains" +
+                          (options->integrator == "rk45" ? std::string() : std::string(", or use --integrator rk45")));
                     }
                     char line[512];
                     if (*json) {

@@ -188,6 +188,7 @@ int Run(const PlanArguments& args) {
   const std::string robot = scenario.robot().empty()
                                 ? std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid_walking.yaml"
                                 : scenario.robot();
+  CheckInputFile("the scenario's robot", robot, "a walking-model YAML file");
   const auto model = std::make_shared<const WalkingModel>(WalkingModel::Load(robot));
   const TransitionOracle oracle =
       LoadOrBuildOracle(args.oracle_cache.empty() ? DefaultOracleCache() : args.oracle_cache, *model, objective);

@@ -155,13 +155,16 @@ int RunStereoEval(const StereoEvalState& s) {
   evaluation_options.border = s.border;
   const StereoEvaluation result = EvaluateStereo(confidence, wta, gt, occluded, evaluation_options);
   const double parameter = model->parameter();
+  // Nine significant digits: "%f" wrote a parameter of 1e-300 as 0.000000. JSON has no NaN (the histogram model).
+  char parameter_text[32] = "null";
+  if (std::isfinite(parameter)) std::snprintf(parameter_text, sizeof(parameter_text), "%.9g", parameter);
   if (s.json) {
     std::printf(
         "{\"bad_pixel_rate\": %.6f, \"bad_pixel_rate_subpixel\": %.6f, \"auc\": %.6f, \"auc_optimal\": %.6f, \"c_gt_badpx\": %.6f, "
         "\"parameter\": %s, \"model\": \"%s\", \"cost\": \"%s\", \"window\": %d, \"max_disparity\": %d, "
         "\"pixels\": %zu, \"ms_cost_volume\": %.3f, \"ms_wta\": %.3f, \"ms_confidence\": %.3f}\n",
         result.bad_pixel_rate, result.bad_pixel_rate_subpixel, result.auc, result.auc_optimal, result.c_gt_badpx,
-        std::isfinite(parameter) ? std::to_string(parameter).c_str() : "null", s.model.c_str(), s.cost.c_str(),
+        parameter_text, s.model.c_str(), s.cost.c_str(),
         s.window, options.max_disparity, result.num_pixels, ms_cost_volume, ms_wta, ms_confidence);
   } else {
     std::printf("model            %s\n", model->Describe().c_str());

@@ -43,6 +43,13 @@ TEST(PerceptionCommandsTest, StereoEvalPrintsTheMeasuresAsTextAndJson) {
   EXPECT_EQ(json.output.front(), '{');
 }
 
+TEST(PerceptionCommandsTest, StereoEvalJsonKeepsSmallParameters) {
+  // "%f" printed 1e-300 as 0.000000.
+  const CairnRun json = RunCairn(VenusPair() + " --dmax 31 --model exp --params 1e-300 --json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  EXPECT_THAT(json.output, HasSubstr("\"parameter\": 1e-300,"));
+}
+
 TEST(PerceptionCommandsTest, StereoEvalBadInputExitsWithOneAndSaysWhy) {
   const CairnRun missing = RunCairn("stereo-eval --left " + Venus("im2.png") + " --right /no/such.png --gt " +
                             Venus("disp2.png") + " --gt-scale 8");
