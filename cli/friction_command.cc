@@ -27,6 +27,10 @@ using perception::FrictionQuantileImage;
 using perception::MaterialRegistry;
 using perception::QuantileMethod;
 
+// eta is a probability in (0, 1); closer to either end than this, 1 - eta rounds (1 - 1e-300 is 1) and the
+// quantile is meaningless.
+constexpr double kMinEta = 1e-6;
+
 struct FrictionArguments {
   std::string image;
   std::string segmenter{"builtin"};
@@ -197,7 +201,7 @@ void RegisterFrictionCommand(CommandRegistry* registry) {
                   app.add_option("--registry", args->registry,
                                  "Material registry YAML (default: the thesis' Table 3.3)");
                   AddNumberOption(app, "--eta", &args->eta, "Probability that friction is at least the quantile",
-                                  NumberRange::Open(0.0, 1.0));
+                                  NumberRange::Closed(kMinEta, 1.0 - kMinEta));
                   AddChoiceOption(app, "--method", &args->method, "Quantile method", {"exact", "search", "gaussian"});
                   app.add_option("--out", args->out,
                                  "Output folder (replaced as a whole: materials.png, friction.png, friction.json)")

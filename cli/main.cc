@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
                                        (close ? "did you mean '" + closest.front() + "'?"
                                               : "the subcommands are " + cairn::QuotedList(names)));
     }
-  } else if (first != "-h" && first != "--help" && first != "--help-all" && first != "--version") {
+  } else if (first != "-h" && first != "--help" && first != "--version") {
     return UsageFailure("cairn", "unknown option '" + first + "'; cairn takes a subcommand first (one of " +
                                      cairn::QuotedList(names) + "), then its options");
   }

@@ -63,7 +63,7 @@ TEST_F(FrictionCommandTest, BadInputsExitWithOneAndSayWhy) {
   EXPECT_THAT(run.output, HasSubstr("--image '/nonexistent.png' does not exist"));
   run = RunCairn("friction --image " + image_ + " --eta 1.5 --out " + out);
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_THAT(run.output, HasSubstr("--eta '1.5' is out of range; give a number greater than 0 and less than 1"));
+  EXPECT_THAT(run.output, HasSubstr("--eta '1.5' is out of range; give a number from 1e-06 to 0.999999"));
   run = RunCairn("friction --image " + image_ + " --segmenter magic --out " + out);
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_THAT(run.output, HasSubstr("Unknown segmenter 'magic'"));

@@ -58,7 +58,7 @@ std::vector<NumericOption> AllNumericOptions() {
       {"occupancy", "--peak-ratio", "a number from 0 to 100"},
       {"occupancy", "--frames", "an integer from 1 to 1000"},
       {"occupancy", "--window", "an odd integer from 1 to 2051"},
-      {"friction --image i.png --out o", "--eta", "a number greater than 0 and less than 1"},
+      {"friction --image i.png --out o", "--eta", "a number from 1e-06 to 0.999999"},
       {train, "--images", "an integer from 2 to 100000"},
       {train, "--test-images", "an integer from 1 to 100000"},
       {train, "--seed", "an integer from 0 to 4294967295"},
