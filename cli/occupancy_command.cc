@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cairn/common/atomic_file.h"
 #include "cairn/perception/occupancy/bars_scenario.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
 #include "cairn/perception/occupancy/occupancy_scenario.h"
@@ -18,7 +19,6 @@
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
 #include "cairn/perception/stereo/synthetic_stereo_renderer.h"
-#include "cairn/common/atomic_file.h"
 #include "choice_option.h"
 #include "command_registry.h"
 #include "file_checks.h"
