@@ -2,6 +2,7 @@
 // option, the value given and what to give instead. (Failures are exit 1; see output_files_test.cc.)
 
 #include <cctype>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +38,9 @@ struct NumericOption {
   std::string option;
   std::string range;  // as the message states it
 };
+
+// Names the case in test listings (gtest would print the bytes).
+void PrintTo(const NumericOption& o, std::ostream* out) { *out << o.subcommand << " " << o.option; }
 
 // Every numeric option of every subcommand (diagram and model-info have none).
 std::vector<NumericOption> AllNumericOptions() {
