@@ -16,6 +16,7 @@
 #include <cairn/multibody/urdf_parser.h>
 
 #include "command_registry.h"
+#include "file_checks.h"
 
 namespace cairn::cli {
 namespace {
@@ -82,6 +83,7 @@ std::string Vector(const Eigen::Vector3d& v) {
 }
 
 int Run(const ModelInfoOptions& options) {
+  CheckInputFile("the URDF", options.urdf, "a URDF file");
   multibody::UrdfOptions urdf_options;
   urdf_options.floating_base = options.floating_base;
   for (const std::string& spec : options.packages) urdf_options.packages.AddSpec(spec);

@@ -4,24 +4,32 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "cairn/common/atomic_file.h"
 #include "cairn/common/json_writer.h"
-#include "cairn/perception/occupancy/bars_scenario.h"
+#include "cairn/perception/evaluation/occupancy_score.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
-#include "cairn/perception/occupancy/occupancy_scenario.h"
-#include "cairn/perception/occupancy/occupancy_score.h"
 #include "cairn/perception/occupancy/wta_range_sensor_model.h"
 #include "cairn/perception/stereo/compute_confidence.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
-#include "cairn/perception/stereo/synthetic_stereo_renderer.h"
+#include "cairn/perception/synthetic/bars_scenario.h"
+#include "cairn/perception/synthetic/occupancy_scenario.h"
+#include "cairn/perception/synthetic/synthetic_stereo_renderer.h"
+#include "choice_option.h"
 #include "command_registry.h"
+#include "file_checks.h"
+#include "numeric_option.h"
 
 namespace cairn::cli {
 namespace {
+
+// Frames are rendered and matched one after the other; more than this is no experiment but an hour-long run.
+constexpr int kMaxFrames = 1000;
 
 struct OccupancyState {
   std::string scenario{"bars"};
@@ -37,13 +45,25 @@ struct OccupancyState {
   bool json{false};
 };
 
+// The occupied cells as an ASCII PLY point cloud (the layout of OccupancyGrid::WritePly), so that it can be
+// written atomically: an interrupted or failed write leaves an earlier file whole.
+std::string PlyText(const perception::OccupancyGrid& grid, double threshold = 0.5) {
+  const std::vector<std::size_t> cells = grid.OccupiedCells(threshold);
+  std::ostringstream out;
+  out << "ply\nformat ascii 1.0\nelement vertex " << cells.size()
+      << "\nproperty float x\nproperty float y\nproperty float z\nproperty float probability\nend_header\n";
+  for (const std::size_t i : cells) {
+    const Eigen::Vector3d p = grid.CellCenter(grid.Cell(i));
+    out << p.x() << " " << p.y() << " " << p.z() << " " << grid.probability(i) << "\n";
+  }
+  return out.str();
+}
+
 int RunOccupancy(const OccupancyState& s) {
   using namespace cairn::perception;
   const bool wta_model = s.model == "wta";
-  if (!wta_model && s.model != "merrell" && s.model != "matthies" && s.model != "exp" && s.model != "hsm") {
-    throw std::invalid_argument("unknown occupancy model '" + s.model +
-                                "'; expected one of 'merrell', 'matthies', 'exp', 'hsm', 'wta'");
-  }
+  if (s.scenario != "bars") CheckInputFile("--scenario", s.scenario, "'bars' or a scenario YAML file");
+  if (!s.ply.empty()) CheckOutputFile("--ply", s.ply);
   const ConfidenceModelType type = wta_model ? ConfidenceModelType::kMerrell : ParseConfidenceModelType(s.model);
   const CostFunction cost = ParseCostFunction(s.cost);
   OccupancyScenario scenario;
@@ -52,20 +72,14 @@ int RunOccupancy(const OccupancyState& s) {
   } else {
     scenario = OccupancyScenario::FromYaml(s.scenario);
     if (s.frames_given) {
-      if (s.frames < 1 || s.frames > static_cast<int>(scenario.trajectory.size())) {
+      if (s.frames > static_cast<int>(scenario.trajectory.size())) {
         throw std::invalid_argument("--frames " + std::to_string(s.frames) + ": scenario '" + s.scenario + "' has " +
                                     std::to_string(scenario.trajectory.size()) + " frames; ask for 1 to that many");
       }
       scenario.trajectory.resize(static_cast<std::size_t>(s.frames));
     }
   }
-  if (s.noise_given) {
-    if (!(s.noise_variance >= 0.0)) {
-      throw std::invalid_argument("--noise-var " + std::to_string(s.noise_variance) +
-                                  " is negative; use 0 for noise-free images");
-    }
-    scenario.noise_variance = s.noise_variance;
-  }
+  if (s.noise_given) scenario.noise_variance = s.noise_variance;
   const SyntheticStereoRenderer renderer(scenario.calibration, scenario.width, scenario.height,
                                          scenario.noise_variance, scenario.seed);
   CostVolumeOptions options;
@@ -124,7 +138,7 @@ int RunOccupancy(const OccupancyState& s) {
                 score.precision, score.recall, score.true_positives, score.false_positives, score.num_occupied,
                 total_ms / static_cast<double>(scenario.trajectory.size()));
   }
-  if (!s.ply.empty()) grid.WritePly(s.ply);
+  if (!s.ply.empty()) WriteFileAtomically(s.ply, PlyText(grid));
   return 0;
 }
 
@@ -137,17 +151,19 @@ void RegisterOccupancyCommand(CommandRegistry* registry) {
                   app.add_option("--scenario", s->scenario,
                                  "bars (thesis Figs. 4.7/4.8) or a YAML file (docs/occupancy_scenarios.md)")
                       ->capture_default_str();
-                  app.add_option("--model", s->model, "merrell, matthies, exp, hsm (cost-curve, ML) or wta")
-                      ->capture_default_str();
-                  CLI::Option* noise = app.add_option("--noise-var", s->noise_variance,
-                                 "Gaussian image noise variance (0..255 scale); overrides the scenario's")
-                      ->capture_default_str();
-                  app.add_option("--peak-ratio", s->peak_ratio, "WTA model: minimum peak ratio")->capture_default_str();
-                  CLI::Option* frames =
-                      app.add_option("--frames", s->frames, "Number of frames (YAML: the first N of the file's)")
-                      ->capture_default_str();
-                  app.add_option("--cost", s->cost, "ssd or btsad")->capture_default_str();
-                  app.add_option("--window", s->window, "Odd window side")->capture_default_str();
+                  AddChoiceOption(app, "--model", &s->model, "Sensor model: cost-curve (fitted by maximum likelihood) "
+                                  "or winner-take-all ranges", {"merrell", "matthies", "exp", "hsm", "wta"});
+                  CLI::Option* noise = AddNumberOption(app, "--noise-var", &s->noise_variance,
+                                                       "Gaussian image noise variance (0..255 scale); overrides the "
+                                                       "scenario's", NumberRange::Closed(0.0, 255.0 * 255.0));
+                  AddNumberOption(app, "--peak-ratio", &s->peak_ratio, "WTA model: minimum peak ratio (0: off)",
+                                  NumberRange::Closed(0.0, 100.0));
+                  CLI::Option* frames = AddNumberOption(app, "--frames", &s->frames,
+                                                        "Number of frames (YAML: the first N of the file's)",
+                                                        NumberRange::Closed(1, kMaxFrames));
+                  AddChoiceOption(app, "--cost", &s->cost, "Window cost", {"ssd", "btsad"});
+                  AddNumberOption(app, "--window", &s->window, "Window side (ssd: at most 181)",
+                                  NumberRange::Closed(1, 2051).OddOnly());
                   app.add_option("--ply", s->ply, "Write the final occupied cells to this PLY file");
                   app.add_flag("--json", s->json, "Print one JSON object");
                   return [s, noise, frames] {

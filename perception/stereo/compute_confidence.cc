@@ -7,7 +7,7 @@
 
 #include "cairn/common/cairn_assert.h"
 #include "cairn/common/parallel_for.h"
-#include "cairn/perception/internal/fast_exp.h"
+#include "cairn/perception/stereo/internal/fast_exp.h"
 
 namespace cairn::perception {
 

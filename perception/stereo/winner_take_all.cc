@@ -12,7 +12,7 @@
 #include "cairn/common/cairn_assert.h"
 #include "cairn/common/parallel_for.h"
 #include "cairn/perception/internal/multiversion.h"
-#include "cairn/perception/internal/winner_take_all_row.h"
+#include "cairn/perception/stereo/internal/winner_take_all_row.h"
 
 namespace cairn::perception {
 

@@ -1,5 +1,6 @@
 #include <cairn/multibody/configuration.h>
 
+#include <limits>
 #include <random>
 
 #include <gmock/gmock.h>
@@ -70,6 +71,17 @@ TEST_F(ConfigurationTest, LimitHelpers) {
   EXPECT_NEAR(ClampToPositionLimits(model_, q)[knee.idx_q], knee.upper_limit, 1e-12);
   q[knee.idx_q] = knee.lower_limit - 0.5;
   EXPECT_NEAR(PositionLimitViolation(model_, q)[knee.idx_q], -0.5, 1e-12);
+  // A NaN tolerance would compare false everywhere and call every configuration out of limits.
+  CAIRN_EXPECT_THROWS_WITH(IsWithinPositionLimits(model_, q, std::numeric_limits<double>::quiet_NaN()),
+                           std::invalid_argument, "tolerance nan", ">= 0");
+  CAIRN_EXPECT_THROWS_WITH(IsWithinPositionLimits(model_, q, -0.1), std::invalid_argument, "tolerance -0.1");
+}
+
+TEST_F(ConfigurationTest, RandomConfigurationRefusesANonFiniteRange) {
+  std::mt19937 rng(7);
+  CAIRN_EXPECT_THROWS_WITH(RandomConfiguration(model_, rng, std::numeric_limits<double>::infinity()),
+                           std::invalid_argument, "unlimited_range inf", "finite and >= 0");
+  CAIRN_EXPECT_THROWS_WITH(RandomConfiguration(model_, rng, -1.0), std::invalid_argument, "unlimited_range -1");
 }
 
 TEST_F(ConfigurationTest, NormalizeAndErrors) {

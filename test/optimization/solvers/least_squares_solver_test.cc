@@ -3,6 +3,9 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
@@ -213,6 +216,28 @@ TEST(LeastSquaresSolverTest, RejectsUnknownOptions) {
   CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), bad_algorithm),
                            std::invalid_argument,
                            "option 'algorithm' = 'dogleg' is not valid; use 'levenberg_marquardt' or 'gauss_newton'");
+  // Values out of range were used as given before (a negative count ran no iteration; a zero outer count was
+  // silently raised to one).
+  const std::vector<std::pair<SolverOptions, std::string>> out_of_range = [] {
+    std::vector<std::pair<SolverOptions, std::string>> cases(6);
+    cases[0].first.Set("least_squares", "max_iterations", -1);
+    cases[0].second = "option 'max_iterations' = -1 must be >= 1";
+    cases[1].first.Set("least_squares", "max_outer_iterations", 0);
+    cases[1].second = "option 'max_outer_iterations' = 0 must be >= 1";
+    cases[2].first.Set("least_squares", "gradient_tolerance", -1e-8);
+    cases[2].second = "option 'gradient_tolerance' = -1e-08 must be finite and >= 0";
+    cases[3].first.Set("least_squares", "initial_damping", 0.0);
+    cases[3].second = "option 'initial_damping' = 0 must be finite and > 0";
+    cases[4].first.Set("least_squares", "step_tolerance", std::numeric_limits<double>::infinity());
+    cases[4].second = "option 'step_tolerance' = inf must be finite";
+    cases[5].first.Set("least_squares", "constraint_tol", -1);
+    cases[5].second = "option 'constraint_tol' = -1 must be finite and >= 0";
+    return cases;
+  }();
+  for (const auto& [options, message] : out_of_range) {
+    CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), options),
+                             std::invalid_argument, message);
+  }
   SolverOptions limit;
   limit.Set("least_squares", "max_iterations", 2);
   const SolverResult limited = LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), limit);

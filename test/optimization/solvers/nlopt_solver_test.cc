@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <gmock/gmock.h>
@@ -218,6 +220,34 @@ TEST(NloptSolverTest, RejectsUnknownOptions) {
   wrong_type.Set("nlopt", "maxeval", 10.5);
   CAIRN_EXPECT_THROWS_WITH(NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), wrong_type),
                            std::invalid_argument, "option 'maxeval' is an integer but was given 10.5");
+}
+
+TEST(NloptSolverTest, RejectsOptionsOutOfRange) {
+  const test::TestProblem p = test::MakeHs035();
+  // NLopt read each of these differently from what was asked: maxeval <= 0 and maxtime <= 0 as no limit, a
+  // negative tolerance as none, a negative seed wrapped round to a huge unsigned number.
+  const std::vector<std::tuple<std::string, SolverOptions::Value, std::string>> cases = {
+      {"maxeval", 0, "option 'maxeval' = 0 must be >= 1"},
+      {"maxeval", -5, "option 'maxeval' = -5 must be >= 1"},
+      {"seed", -1, "option 'seed' = -1 must be >= 0"},
+      {"population", -2, "option 'population' = -2 must be >= 0"},
+      {"maxtime", -1.0, "option 'maxtime' = -1 must be > 0 seconds"},
+      {"maxtime", 0, "option 'maxtime' = 0 must be > 0 seconds"},
+      {"xtol_rel", -1e-6, "option 'xtol_rel' = -1e-06 must be finite and >= 0"},
+      {"ftol_abs", std::numeric_limits<double>::infinity(), "option 'ftol_abs' = inf must be finite"},
+      {"constraint_tol", -1e-8, "option 'constraint_tol' = -1e-08 must be finite and >= 0."},
+      {"LD_SLSQP.xtol_abs", -1.0, "option 'xtol_abs' = -1"},
+  };
+  for (const auto& [name, value, message] : cases) {
+    SolverOptions options;
+    if (const int* i = std::get_if<int>(&value)) {
+      options.Set("nlopt", name, *i);
+    } else {
+      options.Set("nlopt", name, std::get<double>(value));
+    }
+    CAIRN_EXPECT_THROWS_WITH(NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), options),
+                             std::invalid_argument, message);
+  }
 }
 
 TEST(NloptSolverTest, TwoSidedRowsAreRegisteredTwice) {

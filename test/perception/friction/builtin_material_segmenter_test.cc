@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "cairn/perception/friction/material_scene.h"
-#include "cairn/perception/friction/material_segmentation_score.h"
-#include "cairn/perception/friction/material_texture.h"
+#include "cairn/perception/evaluation/material_segmentation_score.h"
+#include "cairn/perception/synthetic/material_scene.h"
+#include "cairn/perception/synthetic/material_texture.h"
 #include "expect_throws.h"
 
 namespace cairn::perception {
