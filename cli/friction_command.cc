@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cairn/common/atomic_output_directory.h"
+#include "cairn/common/json_writer.h"
 #include "cairn/perception/friction/friction_quantile_image.h"
 #include "cairn/perception/friction/make_material_segmenter.h"
 #include "cairn/perception/friction/material_registry.h"
@@ -59,15 +60,6 @@ void WritePng(AtomicOutputDirectory* out, const std::string& name, const cv::Mat
     throw std::runtime_error("Cannot encode '" + out->path() + "/" + name + "' as PNG.");
   }
   out->WriteFile(name, std::string(bytes.begin(), bytes.end()));
-}
-
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
 }
 
 int Run(const FrictionArguments& args) {
@@ -146,30 +138,24 @@ int Run(const FrictionArguments& args) {
   }
   const double pixels = static_cast<double>(q.total());
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-  char number[256];
-  std::string json = "{\"image\": " + JsonString(args.image) + ", \"width\": " + std::to_string(image.cols) +
-                     ", \"height\": " + std::to_string(image.rows) + ", \"segmenter\": " + JsonString(args.segmenter) +
-                     ", \"eta\": ";
-  std::snprintf(number, sizeof(number), "%.6g", args.eta);
-  json += number;
-  json += ", \"method\": " + JsonString(args.method);
-  std::snprintf(number, sizeof(number), ", \"quantile_min\": %.6f, \"quantile_mean\": %.6f, \"quantile_max\": %.6f",
-                low, sum / pixels, high);
-  json += number;
-  std::snprintf(number, sizeof(number), ", \"ms_segment\": %.3f, \"ms_quantile\": %.3f", ms(t0, t1), ms(t2, t3));
-  json += number;
-  json += ", \"label_fractions\": {";
-  for (int i = 0; i < n; ++i) {
-    std::snprintf(number, sizeof(number), "%.6f", label_fraction[i] / pixels);
-    json += (i > 0 ? ", " : "") + JsonString(registry.material(i).label) + ": " + number;
-  }
-  json += "}, \"palette_bgr\": {";
+  const JsonWriter::NumberFormat f6 = JsonWriter::Fixed(6);
+  JsonWriter writer;
+  writer.BeginObject().Key("image").String(args.image).Key("width").Integer(image.cols);
+  writer.Key("height").Integer(image.rows).Key("segmenter").String(args.segmenter);
+  writer.Key("eta").Number(args.eta).Key("method").String(args.method);
+  writer.Key("quantile_min").Number(low, f6).Key("quantile_mean").Number(sum / pixels, f6);
+  writer.Key("quantile_max").Number(high, f6);
+  writer.Key("ms_segment").Number(ms(t0, t1), JsonWriter::Fixed(3));
+  writer.Key("ms_quantile").Number(ms(t2, t3), JsonWriter::Fixed(3)).Key("label_fractions").BeginObject();
+  for (int i = 0; i < n; ++i) writer.Key(registry.material(i).label).Number(label_fraction[i] / pixels, f6);
+  writer.EndObject().Key("palette_bgr").BeginObject();
   for (int i = 0; i < n; ++i) {
     const cv::Vec3b& colour = kPalette[i % (sizeof(kPalette) / sizeof(kPalette[0]))];
-    json += (i > 0 ? ", " : "") + JsonString(registry.material(i).label) + ": [" + std::to_string(colour[0]) + ", " +
-            std::to_string(colour[1]) + ", " + std::to_string(colour[2]) + "]";
+    writer.Key(registry.material(i).label).BeginArray();
+    writer.Integer(colour[0]).Integer(colour[1]).Integer(colour[2]).EndArray();
   }
-  json += "}}\n";
+  writer.EndObject().EndObject();
+  const std::string json = writer.text() + "\n";
 
   WritePng(&out, "materials.png", labels);
   WritePng(&out, "friction.png", grey);

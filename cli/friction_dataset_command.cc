@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cairn/common/atomic_output_directory.h"
+#include "cairn/common/json_writer.h"
 #include "cairn/perception/synthetic/material_scene.h"
 #include "cairn/perception/synthetic/stereo_material_scene.h"
 #include "choice_option.h"
@@ -99,8 +100,10 @@ int RunFrictionDataset(const FrictionDatasetState& s) {
   }
   out.Commit();
   if (s.json) {
-    std::printf("{\"out\": \"%s\", \"images\": %d, \"seed\": %u, \"width\": %d, \"height\": %d, \"labels\": %zu}\n",
-                s.out.c_str(), s.images, s.seed, s.width, s.height, labels.size());
+    JsonWriter json;
+    json.BeginObject().Key("out").String(s.out).Key("images").Integer(s.images).Key("seed").Integer(s.seed);
+    json.Key("width").Integer(s.width).Key("height").Integer(s.height).Key("labels").Integer(labels.size());
+    std::printf("%s\n", json.EndObject().text().c_str());
   } else {
     std::printf("wrote %d image/label pairs (%dx%d, %zu labels listed in %s/labels.txt; label 255 = none) to %s\n",
                 s.images, s.width, s.height, labels.size(), s.out.c_str(), s.out.c_str());

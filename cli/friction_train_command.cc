@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "cairn/common/json_writer.h"
+#include "cairn/common/number_text.h"
 #include "cairn/perception/evaluation/material_segmentation_score.h"
 #include "cairn/perception/friction/builtin_material_segmenter.h"
 #include "cairn/perception/synthetic/material_scene.h"
 #include "cairn/perception/synthetic/stereo_material_scene.h"
-#include "cairn/common/number_text.h"
 #include "choice_option.h"
 #include "command_registry.h"
 #include "file_checks.h"
@@ -128,24 +129,26 @@ int RunFrictionTrain(const FrictionTrainState& s) {
     }
   }
   if (s.json) {
-    std::printf("{\"model\": \"%s\", \"source\": \"%s\", \"train_images\": %d, \"test_images\": %d, "
-                "\"width\": %d, \"height\": %d, \"train_seconds\": %.2f, \"training_samples\": %d, "
-                "\"calibration_samples\": %d, "
-                "\"temperature\": %.4f, \"calibration_ece_before\": %.4f, \"calibration_ece_after\": %.4f, "
-                "\"test_pixel_accuracy\": %.4f, \"test_class_average_accuracy\": %.4f, \"test_ece\": %.4f, "
-                "\"test_nll\": %.4f, \"segment_ms_per_image\": %.2f, \"per_label_accuracy\": {",
-                s.out.c_str(), s.source.c_str(), s.images, s.test_images, s.width, s.height, train_s,
-                report.num_training_samples, report.num_calibration_samples, report.temperature, report.ece_before,
-                report.ece_after,
-                score.pixel_accuracy(), score.class_average_accuracy(), score.expected_calibration_error(),
-                score.mean_negative_log_likelihood(), segment_ms);
-    bool first = true;
+    const JsonWriter::NumberFormat f2 = JsonWriter::Fixed(2);
+    const JsonWriter::NumberFormat f4 = JsonWriter::Fixed(4);
+    JsonWriter json;
+    json.BeginObject().Key("model").String(s.out).Key("source").String(s.source);
+    json.Key("train_images").Integer(s.images).Key("test_images").Integer(s.test_images);
+    json.Key("width").Integer(s.width).Key("height").Integer(s.height).Key("train_seconds").Number(train_s, f2);
+    json.Key("training_samples").Integer(report.num_training_samples);
+    json.Key("calibration_samples").Integer(report.num_calibration_samples);
+    json.Key("temperature").Number(report.temperature, f4);
+    json.Key("calibration_ece_before").Number(report.ece_before, f4);
+    json.Key("calibration_ece_after").Number(report.ece_after, f4);
+    json.Key("test_pixel_accuracy").Number(score.pixel_accuracy(), f4);
+    json.Key("test_class_average_accuracy").Number(score.class_average_accuracy(), f4);
+    json.Key("test_ece").Number(score.expected_calibration_error(), f4);
+    json.Key("test_nll").Number(score.mean_negative_log_likelihood(), f4);
+    json.Key("segment_ms_per_image").Number(segment_ms, f2).Key("per_label_accuracy").BeginObject();
     for (std::size_t k = 0; k < labels.size(); ++k) {
-      if (per_label[k] < 0.0) continue;
-      std::printf("%s\"%s\": %.4f", first ? "" : ", ", labels[k].c_str(), per_label[k]);
-      first = false;
+      if (per_label[k] >= 0.0) json.Key(labels[k]).Number(per_label[k], f4);
     }
-    std::printf("}}\n");
+    std::printf("%s\n", json.EndObject().EndObject().text().c_str());
   } else {
     std::printf("trained on %d %s renders (%dx%d) in %.1f s: %d patches, %d calibration patches\n", s.images,
                 s.source.c_str(), s.width, s.height, train_s, report.num_training_samples,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cairn/common/atomic_file.h"
+#include "cairn/common/json_writer.h"
 #include "cairn/perception/evaluation/occupancy_score.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
 #include "cairn/perception/occupancy/wta_range_sensor_model.h"
@@ -97,8 +98,10 @@ int RunOccupancy(const OccupancyState& s) {
   WtaResult wta;
   double total_ms = 0.0;
   OccupancyScore score;
-  if (s.json) std::printf("{\"scenario\": \"%s\", \"model\": \"%s\", \"noise_var\": %g, \"frames\": [", s.scenario.c_str(),
-                s.model.c_str(), scenario.noise_variance);
+  // The JSON document is printed whole at the end, so a failing frame leaves no half-written object.
+  JsonWriter json;
+  json.BeginObject().Key("scenario").String(s.scenario).Key("model").String(s.model);
+  json.Key("noise_var").Number(scenario.noise_variance).Key("frames").BeginArray();
   for (std::size_t f = 0; f < scenario.trajectory.size(); ++f) {
     const auto frame = renderer.Render(scenario.scene, scenario.trajectory[f], static_cast<int>(f));
     const auto start = std::chrono::steady_clock::now();
@@ -118,15 +121,18 @@ int RunOccupancy(const OccupancyState& s) {
     total_ms += ms;
     score = ScoreOccupancy(grid, truth);
     if (s.json) {
-      std::printf("%s{\"frame\": %zu, \"precision\": %.4f, \"recall\": %.4f, \"ms\": %.2f}", f == 0 ? "" : ", ", f,
-                  score.precision, score.recall, ms);
+      json.BeginObject().Key("frame").Integer(f).Key("precision").Number(score.precision, JsonWriter::Fixed(4));
+      json.Key("recall").Number(score.recall, JsonWriter::Fixed(4)).Key("ms").Number(ms, JsonWriter::Fixed(2));
+      json.EndObject();
     } else {
       std::printf("frame %2zu  precision %.3f  recall %.3f  (%.1f ms)\n", f, score.precision, score.recall, ms);
     }
   }
   if (s.json) {
-    std::printf("], \"precision\": %.4f, \"recall\": %.4f, \"ms_per_frame\": %.2f}\n", score.precision, score.recall,
-                total_ms / static_cast<double>(scenario.trajectory.size()));
+    json.EndArray().Key("precision").Number(score.precision, JsonWriter::Fixed(4));
+    json.Key("recall").Number(score.recall, JsonWriter::Fixed(4));
+    json.Key("ms_per_frame").Number(total_ms / static_cast<double>(scenario.trajectory.size()), JsonWriter::Fixed(2));
+    std::printf("%s\n", json.EndObject().text().c_str());
   } else {
     std::printf("final     precision %.3f  recall %.3f  (tp %zu, fp %zu, n %zu); %.1f ms per frame (stereo + grid)\n",
                 score.precision, score.recall, score.true_positives, score.false_positives, score.num_occupied,

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cairn/common/json_writer.h"
 #include "cairn/common/number_text.h"
 #include "choice_option.h"
 #include "command_registry.h"
@@ -73,14 +74,14 @@ void RegisterPendulumCommand(CommandRegistry* registry) {
                     }
                     char line[512];
                     if (*json) {
-                      std::snprintf(line, sizeof(line),
-                                    "{\"time\": %.6f, \"theta\": %.9f, \"theta_dot\": %.9f, "
-                                    "\"predicted_equilibrium\": %.9f, \"energy_J\": %.9f, \"steps\": %lld, "
-                                    "\"log_samples\": %d}\n",
-                                    run.final_time, run.final_state[0], run.final_state[1], run.predicted_equilibrium,
-                                    run.final_energy, static_cast<long long>(run.steps),
-                                    static_cast<int>(run.log_times.size()));
-                      std::cout << line;
+                      const JsonWriter::NumberFormat f9 = JsonWriter::Fixed(9);
+                      JsonWriter out;
+                      out.BeginObject().Key("time").Number(run.final_time, JsonWriter::Fixed(6));
+                      out.Key("theta").Number(run.final_state[0], f9).Key("theta_dot").Number(run.final_state[1], f9);
+                      out.Key("predicted_equilibrium").Number(run.predicted_equilibrium, f9);
+                      out.Key("energy_J").Number(run.final_energy, f9).Key("steps").Integer(run.steps);
+                      out.Key("log_samples").Integer(run.log_times.size()).EndObject();
+                      std::cout << out.text() << "\n";
                       return 0;
                     }
                     std::snprintf(line, sizeof(line),

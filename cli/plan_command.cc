@@ -12,10 +12,10 @@
 #include <limits>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include "cairn/common/atomic_output_directory.h"
+#include "cairn/common/json_writer.h"
 #include "cairn/planning/footstep/plan_footsteps.h"
 #include "cairn/planning/footstep/refine_footstep_plan.h"
 #include "cairn/planning/locomotion/transition_oracle.h"
@@ -25,7 +25,6 @@
 #include "choice_option.h"
 #include "command_registry.h"
 #include "file_checks.h"
-#include "json.h"
 #include "numeric_option.h"
 #include "plan_image.h"
 #include "progress_bar.h"
@@ -118,32 +117,29 @@ std::string PlanJson(const FootstepScenario& scenario, const FootstepPlan& plan,
   const auto measure = [&](double x) { return plan.found ? x : none; };
   const double first_plan_ms =
       plan.statistics.first_plan_seconds >= 0.0 ? 1e3 * plan.statistics.first_plan_seconds : none;
-  std::ostringstream out;
-  out << "{\"scenario\": " << JsonString(scenario.name()) << ", \"objective\": " << JsonString(to_string(objective))
-      << ", \"found\": " << JsonBool(plan.found) << ", \"reason\": " << JsonString(plan.reason)
-      << ", \"steps\": " << plan.steps.size() << ", \"cost\": " << JsonNumber(measure(plan.cost))
-      << ", \"energy_J\": " << JsonNumber(measure(plan.energy))
-      << ", \"duration_s\": " << JsonNumber(measure(plan.duration))
-      << ", \"distance_m\": " << JsonNumber(measure(plan.distance))
-      << ", \"max_rcof\": " << JsonNumber(measure(plan.max_rcof))
-      << ", \"min_friction_margin\": " << JsonNumber(measure(plan.min_friction_margin))
-      << ", \"epsilon\": " << JsonNumber(measure(plan.statistics.epsilon))
-      << ", \"expansions\": " << plan.statistics.expansions
-      << ", \"plan_ms\": " << JsonNumber(1e3 * plan.statistics.plan_seconds, 4)
-      << ", \"first_plan_ms\": " << JsonNumber(first_plan_ms, 4)
-      << ", \"refine_ms\": " << JsonNumber(refine_ms, 4) << ", \"footsteps\": [";
-  for (std::size_t k = 0; k < plan.steps.size(); ++k) {
-    const PlannedStep& s = plan.steps[k];
-    out << (k ? ", " : "") << "{\"side\": " << JsonString(FootSideName(s.side)) << ", \"x\": " << JsonNumber(s.pose.x)
-        << ", \"y\": " << JsonNumber(s.pose.y) << ", \"z\": " << JsonNumber(s.pose.z)
-        << ", \"theta\": " << JsonNumber(s.pose.theta) << ", \"t_ds\": " << JsonNumber(s.transition.parameters.t_ds)
-        << ", \"t_sw\": " << JsonNumber(s.transition.parameters.t_sw)
-        << ", \"com_height\": " << JsonNumber(s.transition.parameters.com_height)
-        << ", \"energy_J\": " << JsonNumber(s.transition.com_work + s.transition.heat)
-        << ", \"rcof\": " << JsonNumber(s.transition.rcof) << ", \"mu_allowed\": " << JsonNumber(s.mu_allowed) << "}";
+  const JsonWriter::NumberFormat ms = JsonWriter::Significant(4);
+  JsonWriter json;
+  json.BeginObject().Key("scenario").String(scenario.name()).Key("objective").String(to_string(objective));
+  json.Key("found").Bool(plan.found).Key("reason").String(plan.reason).Key("steps").Integer(plan.steps.size());
+  json.Key("cost").Number(measure(plan.cost)).Key("energy_J").Number(measure(plan.energy));
+  json.Key("duration_s").Number(measure(plan.duration));
+  json.Key("distance_m").Number(measure(plan.distance)).Key("max_rcof").Number(measure(plan.max_rcof));
+  json.Key("min_friction_margin").Number(measure(plan.min_friction_margin));
+  json.Key("epsilon").Number(measure(plan.statistics.epsilon));
+  json.Key("expansions").Integer(plan.statistics.expansions);
+  json.Key("plan_ms").Number(1e3 * plan.statistics.plan_seconds, ms);
+  json.Key("first_plan_ms").Number(first_plan_ms, ms);
+  json.Key("refine_ms").Number(refine_ms, ms).Key("footsteps").BeginArray();
+  for (const PlannedStep& s : plan.steps) {
+    json.BeginObject().Key("side").String(FootSideName(s.side)).Key("x").Number(s.pose.x).Key("y").Number(s.pose.y);
+    json.Key("z").Number(s.pose.z).Key("theta").Number(s.pose.theta);
+    json.Key("t_ds").Number(s.transition.parameters.t_ds).Key("t_sw").Number(s.transition.parameters.t_sw);
+    json.Key("com_height").Number(s.transition.parameters.com_height);
+    json.Key("energy_J").Number(s.transition.com_work + s.transition.heat).Key("rcof").Number(s.transition.rcof);
+    json.Key("mu_allowed").Number(s.mu_allowed).EndObject();
   }
-  out << "]}";
-  return out.str();
+  json.EndArray().EndObject();
+  return json.text();
 }
 
 void PrintSummary(const FootstepScenario& scenario, const FootstepPlan& plan, WalkingObjective objective) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cairn/common/json_writer.h"
 #include "cairn/perception/evaluation/middlebury_pair.h"
 #include "cairn/perception/evaluation/stereo_evaluation.h"
 #include "cairn/perception/stereo/compute_confidence.h"
@@ -155,17 +156,21 @@ int RunStereoEval(const StereoEvalState& s) {
   evaluation_options.border = s.border;
   const StereoEvaluation result = EvaluateStereo(confidence, wta, gt, occluded, evaluation_options);
   const double parameter = model->parameter();
-  // Nine significant digits: "%f" wrote a parameter of 1e-300 as 0.000000. JSON has no NaN (the histogram model).
-  char parameter_text[32] = "null";
-  if (std::isfinite(parameter)) std::snprintf(parameter_text, sizeof(parameter_text), "%.9g", parameter);
   if (s.json) {
-    std::printf(
-        "{\"bad_pixel_rate\": %.6f, \"bad_pixel_rate_subpixel\": %.6f, \"auc\": %.6f, \"auc_optimal\": %.6f, \"c_gt_badpx\": %.6f, "
-        "\"parameter\": %s, \"model\": \"%s\", \"cost\": \"%s\", \"window\": %d, \"max_disparity\": %d, "
-        "\"pixels\": %zu, \"ms_cost_volume\": %.3f, \"ms_wta\": %.3f, \"ms_confidence\": %.3f}\n",
-        result.bad_pixel_rate, result.bad_pixel_rate_subpixel, result.auc, result.auc_optimal, result.c_gt_badpx,
-        parameter_text, s.model.c_str(), s.cost.c_str(),
-        s.window, options.max_disparity, result.num_pixels, ms_cost_volume, ms_wta, ms_confidence);
+    const JsonWriter::NumberFormat f3 = JsonWriter::Fixed(3);
+    const JsonWriter::NumberFormat f6 = JsonWriter::Fixed(6);
+    JsonWriter json;
+    json.BeginObject().Key("bad_pixel_rate").Number(result.bad_pixel_rate, f6);
+    json.Key("bad_pixel_rate_subpixel").Number(result.bad_pixel_rate_subpixel, f6);
+    json.Key("auc").Number(result.auc, f6).Key("auc_optimal").Number(result.auc_optimal, f6);
+    json.Key("c_gt_badpx").Number(result.c_gt_badpx, f6);
+    // Nine significant digits: "%f" wrote a parameter of 1e-300 as 0.000000. The histogram model's NaN is null.
+    json.Key("parameter").Number(parameter, JsonWriter::Significant(9));
+    json.Key("model").String(s.model).Key("cost").String(s.cost).Key("window").Integer(s.window);
+    json.Key("max_disparity").Integer(options.max_disparity).Key("pixels").Integer(result.num_pixels);
+    json.Key("ms_cost_volume").Number(ms_cost_volume, f3).Key("ms_wta").Number(ms_wta, f3);
+    json.Key("ms_confidence").Number(ms_confidence, f3).EndObject();
+    std::printf("%s\n", json.text().c_str());
   } else {
     std::printf("model            %s\n", model->Describe().c_str());
     std::printf("disparities      0..%d, %s %dx%d, prefilter %s\n", options.max_disparity, s.cost.c_str(), s.window,

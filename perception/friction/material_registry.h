@@ -36,7 +36,8 @@ class MaterialRegistry {
   /// paper not walkable. 14 labels in that order.
   static MaterialRegistry ThesisTable33();
 
-  /// Reads a registry from YAML (schema in docs of SaveYaml). Errors name the file, the key and the line.
+  /// Reads a registry from YAML (schema in docs of SaveYaml). Throws std::invalid_argument naming the file, the
+  /// line and the key.
   static MaterialRegistry LoadYaml(const std::string& path);
   /// Writes the registry (with learned parameters and contact counts) atomically:
   /// @code{.yaml}

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "cairn/common/parallel_for.h"
 #include "cairn/common/text_suggestions.h"
 
 namespace cairn::perception {
@@ -66,10 +67,7 @@ void CostVolumeOptions::Validate(int image_width) const {
                                   " is outside 1..63; OpenCV's default is 31");
     }
   }
-  if (num_threads < 0) {
-    throw std::invalid_argument("num_threads " + std::to_string(num_threads) +
-                                " is negative; use 0 for one thread per core");
-  }
+  ResolveThreadCount(num_threads);  // the one thread-count rule: throws for a negative or too large count
 }
 
 }  // namespace cairn::perception

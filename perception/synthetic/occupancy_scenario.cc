@@ -1,83 +1,58 @@
 #include "cairn/perception/synthetic/occupancy_scenario.h"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
+#include "cairn/common/internal/yaml_reader.h"
 #include "cairn/common/text_suggestions.h"
 
 namespace cairn::perception {
 namespace {
 
+using cairn::internal::YamlReader;
+
 // Larger grids are almost certainly a typo in `resolution` or `dims` (4 bytes of log-odds per cell, plus the
 // per-thread accumulators of the sensor models).
 constexpr double kMaxGridCells = 64.0e6;
 
-// Reads typed values out of the YAML tree; every error names the file, the key path and the line.
+// Reads typed values on top of the common reader; messages name the key path ("objects[1].half_extents") after the
+// file and line, and point at the schema.
 class Reader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
+  explicit Reader(const YamlReader& yaml) : yaml_(yaml) {}
 
   [[noreturn]] void Fail(const YAML::Node& node, const std::string& key, const std::string& message) const {
-    std::string where = "occupancy scenario '" + file_ + "'";
-    const YAML::Mark mark = node.Mark();
-    if (mark.line >= 0) where += ", line " + std::to_string(mark.line + 1);
-    throw std::runtime_error(where + ": '" + key + "' " + message + " (schema: docs/occupancy_scenarios.md)");
+    yaml_.Fail(node, "'" + key + "' " + message + " (schema: docs/occupancy_scenarios.md)");
   }
 
   // `map` must be a map whose keys are all in `allowed`; a misspelt key is reported with the closest name.
   void CheckMap(const YAML::Node& map, const std::string& where, const std::vector<std::string>& allowed) const {
-    if (!map.IsMap()) Fail(map, where, "must be a map with keys " + QuotedList(allowed));
-    for (const auto& entry : map) {
-      const std::string key = entry.first.Scalar();
-      bool known = false;
-      for (const auto& name : allowed) known = known || name == key;
-      if (known) continue;
-      std::string message = "is not a known key; expected one of " + QuotedList(allowed);
-      const auto close = ClosestNames(key, allowed, 1);
-      if (!close.empty() && EditDistance(key, close.front()) <= 3) message += " (did you mean '" + close.front() + "'?)";
-      Fail(entry.first, Join(where, key), message);
-    }
+    yaml_.CheckKeys(map, allowed, where.empty() ? "the scenario" : "'" + where + "'");
   }
 
   YAML::Node Required(const YAML::Node& map, const std::string& where, const std::string& key) const {
-    const YAML::Node child = map[key];
-    if (!child || child.IsNull()) Fail(map, Join(where, key), "is missing");
-    return child;
+    if (!YamlReader::Has(map, key)) Fail(map, Join(where, key), "is missing");
+    return map[key];
   }
 
-  double Number(const YAML::Node& node, const std::string& key) const {
-    double value = 0.0;
-    if (!node.IsScalar() || !YAML::convert<double>::decode(node, value) || !std::isfinite(value)) {
-      Fail(node, key, "must be a finite number, got '" + Text(node) + "'");
-    }
-    return value;
-  }
+  double Number(const YAML::Node& node, const std::string& key) const { return yaml_.AsNumber(node, key); }
 
   double Positive(const YAML::Node& node, const std::string& key) const {
     const double value = Number(node, key);
-    if (!(value > 0.0)) Fail(node, key, "must be positive, got " + Text(node));
+    if (!(value > 0.0)) Fail(node, key, "must be positive, got " + node.Scalar());
     return value;
   }
 
   int Integer(const YAML::Node& node, const std::string& key, int min_value) const {
-    int value = 0;
-    if (!node.IsScalar() || !YAML::convert<int>::decode(node, value)) {
-      Fail(node, key, "must be an integer, got '" + Text(node) + "'");
-    }
-    if (value < min_value) Fail(node, key, "must be at least " + std::to_string(min_value) + ", got " + Text(node));
-    return value;
+    return static_cast<int>(yaml_.AsInteger(node, key, min_value, std::numeric_limits<int>::max()));
   }
 
   Eigen::Vector3d Vector3(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsSequence() || node.size() != 3) Fail(node, key, "must be a list of 3 numbers [x, y, z]");
-    Eigen::Vector3d v;
-    for (int i = 0; i < 3; ++i) v[i] = Number(node[i], key + "[" + std::to_string(i) + "]");
-    return v;
+    return yaml_.Numbers(node, key, 3);
   }
 
   static std::string Join(const std::string& where, const std::string& key) {
@@ -85,14 +60,7 @@ class Reader {
   }
 
  private:
-  static std::string Text(const YAML::Node& node) {
-    if (node.IsScalar()) return node.Scalar();
-    if (node.IsSequence()) return "a list";
-    if (node.IsMap()) return "a map";
-    return "nothing";
-  }
-
-  std::string file_;
+  const YamlReader& yaml_;
 };
 
 ProceduralTexture ReadTexture(const Reader& r, const YAML::Node& node, const std::string& where) {
@@ -165,16 +133,9 @@ Eigen::Isometry3d OccupancyScenario::LookAt(const Eigen::Vector3d& position, con
 }
 
 OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw std::runtime_error("occupancy scenario '" + path + "' cannot be read; check the path (or use --scenario bars)");
-  } catch (const YAML::Exception& error) {
-    throw std::runtime_error("occupancy scenario '" + path + "' is not valid YAML: " + error.what());
-  }
-  const Reader r(path);
-  if (!root.IsMap()) r.Fail(root, "(file)", "must be a map with keys 'camera', 'stereo', 'objects', 'trajectory', 'grid'");
+  const YamlReader yaml(path);
+  const YAML::Node& root = yaml.root();
+  const Reader r(yaml);
   r.CheckMap(root, "", {"camera", "stereo", "noise_variance", "seed", "textures", "objects", "trajectory", "grid"});
   OccupancyScenario s;
 

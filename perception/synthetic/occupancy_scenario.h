@@ -44,9 +44,9 @@ struct OccupancyScenario {
   /// See grid_min_corner.
   Eigen::Vector3i grid_dims{Eigen::Vector3i::Ones()};
 
-  /// Reads a scenario from a YAML file (schema: docs/occupancy_scenarios.md). Throws std::runtime_error naming
-  /// the file, the offending key (e.g. `objects[2].half_extents`) and its line for a missing, unknown, mistyped
-  /// or out-of-range entry, and for a file that cannot be read or parsed.
+  /// Reads a scenario from a YAML file (schema: docs/occupancy_scenarios.md). Throws std::invalid_argument naming
+  /// the file, the offending key (e.g. `objects[2].half_extents`) and its line for a missing, unknown, repeated,
+  /// mistyped or out-of-range entry, and for a file that cannot be read or parsed.
   static OccupancyScenario FromYaml(const std::string& path);
 
   /// The camera pose at `position` looking at `target` with the world's +z up in the image (the image's y axis

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "cairn/perception/internal/parallel_rows.h"
+#include "cairn/common/parallel_for.h"
 
 namespace cairn::perception {
 
@@ -39,7 +39,7 @@ SyntheticStereoFrame SyntheticStereoRenderer::Render(const SyntheticStereoScene&
   }
   const Eigen::Matrix3d R_WC = X_WC.linear();
   const StereoCalibration& k = calibration_;
-  internal::ParallelForRows(height_, internal::ResolveThreadCount(0), [&](int, int y0, int y1) {
+  ParallelFor(height_, 0, [&](int, int y0, int y1) {
     for (int view = 0; view < 2; ++view) {
       const Eigen::Vector3d origin = X_WC * Eigen::Vector3d(view == 0 ? 0.0 : k.baseline, 0.0, 0.0);
       for (int y = y0; y < y1; ++y) {

@@ -4,12 +4,12 @@
 #include <sstream>
 
 #include <cairn/perception/friction/material_registry.h>
-#include <cairn/planning/internal/yaml_reader.h>
+#include <cairn/common/internal/yaml_reader.h>
 
 namespace cairn::planning {
 namespace {
 
-using internal::YamlReader;
+using cairn::internal::YamlReader;
 using perception::FrictionDistribution;
 
 constexpr double kDeg = M_PI / 180.0;
@@ -21,8 +21,7 @@ std::string Format(double value) {
 }
 
 FootPose ReadFoot(const YamlReader& yaml, const YAML::Node& node, const std::string& key) {
-  const Eigen::VectorXd v = yaml.Numbers(node, key, 3);
-  if (!v.allFinite()) throw yaml.Error(node, "'" + key + "' must hold finite numbers [x, y, yaw_deg].");
+  const Eigen::VectorXd v = yaml.Numbers(node, key, 3);  // finite: the reader refuses .nan and .inf
   FootPose pose;
   pose.x = v[0];
   pose.y = v[1];

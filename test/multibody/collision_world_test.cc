@@ -20,8 +20,6 @@
 namespace cairn::multibody {
 namespace {
 
-using test::ExpectThrowWithMessage;
-
 class CollisionWorldTest : public ::testing::Test {
  protected:
   CollisionWorldTest() : model_(test::LoadRobot(test::HumanoidUrdf(), true)), data_(model_), world_(model_) {
@@ -78,12 +76,12 @@ TEST_F(CollisionWorldTest, FiltersAdjacentAndExcludedPairs) {
   for (const CollisionPair& pair : world_.PairsWithin(0.1)) {
     EXPECT_FALSE(pair.geometry_a == sole && pair.geometry_b == ground_);
   }
-  ExpectThrowWithMessage<std::invalid_argument>([&] { world_.ExcludeBodyPair("pelvis", "l_thig"); },
-                                                {"unknown body 'l_thig'", "'l_thigh'"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { world_.GetGeometryIndex("grund"); },
-                                                {"unknown geometry 'grund'", "'ground'"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { world_.AddSphere("ground", 1.0, Eigen::Vector3d::Zero()); },
-                                                {"'ground'", "unique"});
+  CAIRN_EXPECT_THROWS_WITH(world_.ExcludeBodyPair("pelvis", "l_thig"), std::invalid_argument, "unknown body 'l_thig'",
+                           "'l_thigh'");
+  CAIRN_EXPECT_THROWS_WITH(world_.GetGeometryIndex("grund"), std::invalid_argument, "unknown geometry 'grund'",
+                           "'ground'");
+  CAIRN_EXPECT_THROWS_WITH(world_.AddSphere("ground", 1.0, Eigen::Vector3d::Zero()), std::invalid_argument, "'ground'",
+                           "unique");
 }
 
 TEST_F(CollisionWorldTest, PointsAndSpheresUseClosedForms) {
@@ -166,8 +164,8 @@ TEST_F(CollisionWorldTest, HeightFieldColumnsUnderTheFeet) {
   EXPECT_EQ(bumpy.geometry_name(hits[1].geometry_a), "l_ankle_box");
   EXPECT_NEAR(hits[1].result.distance, 0.03 - 0.05, 1e-12);
   heights(0, 0) = -1.0;
-  ExpectThrowWithMessage<std::invalid_argument>([&] { bumpy.AddHeightField("bad", heights, 0.02, origin, -0.1); },
-                                                {"'bad'", "below the bottom", "NaN"});
+  CAIRN_EXPECT_THROWS_WITH(bumpy.AddHeightField("bad", heights, 0.02, origin, -0.1), std::invalid_argument, "'bad'",
+                           "below the bottom", "NaN");
 }
 
 TEST(CollisionWorldMeshTest, LoadsStlMeshesOfDrcHubo) {
@@ -183,8 +181,8 @@ TEST(CollisionWorldMeshTest, LoadsStlMeshesOfDrcHubo) {
   // The torso mesh lies within a metre of the origin.
   EXPECT_GT(d, 3.5);
   EXPECT_LT(d, 5.0);
-  ExpectThrowWithMessage<std::invalid_argument>([&] { world.AddPoints("empty", Eigen::Matrix3Xd(3, 0)); },
-                                                {"'empty'", "at least one"});
+  CAIRN_EXPECT_THROWS_WITH(world.AddPoints("empty", Eigen::Matrix3Xd(3, 0)), std::invalid_argument, "'empty'",
+                           "at least one");
 }
 
 TEST_F(CollisionWorldTest, NanMarginsAreRefused) {

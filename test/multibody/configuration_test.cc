@@ -12,8 +12,6 @@
 namespace cairn::multibody {
 namespace {
 
-using test::ExpectThrowWithMessage;
-
 class ConfigurationTest : public ::testing::Test {
  protected:
   const Model model_ = test::LoadRobot(test::AtlasUrdf(), true);
@@ -93,13 +91,11 @@ TEST_F(ConfigurationTest, NormalizeAndErrors) {
   NormalizeConfiguration(model_, q);
   EXPECT_DOUBLE_EQ(q[root.idx_q + 3], 1.0);
   q.segment<4>(root.idx_q + 3).setZero();
-  ExpectThrowWithMessage<std::invalid_argument>([&] { NormalizeConfiguration(model_, q); },
-                                                {"root_joint", "(1, 0, 0, 0)"});
-  ExpectThrowWithMessage<std::invalid_argument>(
-      [&] { Integrate(model_, Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(model_.nv())); },
-      {"q has size 3", "nq = 34"});
-  ExpectThrowWithMessage<std::invalid_argument>(
-      [&] { Integrate(model_, NeutralConfiguration(model_), Eigen::VectorXd::Zero(2)); }, {"v has size 2", "nv = 33"});
+  CAIRN_EXPECT_THROWS_WITH(NormalizeConfiguration(model_, q), std::invalid_argument, "root_joint", "(1, 0, 0, 0)");
+  CAIRN_EXPECT_THROWS_WITH(Integrate(model_, Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(model_.nv())),
+                           std::invalid_argument, "q has size 3", "nq = 34");
+  CAIRN_EXPECT_THROWS_WITH(Integrate(model_, NeutralConfiguration(model_), Eigen::VectorXd::Zero(2)),
+                           std::invalid_argument, "v has size 2", "nv = 33");
 }
 
 }  // namespace

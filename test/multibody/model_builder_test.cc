@@ -14,8 +14,6 @@
 namespace cairn::multibody {
 namespace {
 
-using test::ExpectThrowWithMessage;
-
 Body MakeBody(const std::string& name, double mass = 1.0) {
   Body body;
   body.name = name;
@@ -67,44 +65,43 @@ TEST(ModelBuilderTest, UnknownNamesListTheClosestOnes) {
   builder.AddBody(0, MakeBody("l_foot"), Revolute("l_ankle"));
   builder.AddBody(1, MakeBody("r_foot"), Revolute("r_ankle"));
   const Model model = builder.Build();
-  ExpectThrowWithMessage<std::invalid_argument>([&] { model.GetBodyIndex("l_fot"); },
-                                                {"unknown body 'l_fot'", "'l_foot'", "arm"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { model.GetJointIndex("r_ankel"); },
-                                                {"unknown joint 'r_ankel'", "'r_ankle'"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { model.GetFrameIndex("wrld"); }, {"'world'"});
+  CAIRN_EXPECT_THROWS_WITH(model.GetBodyIndex("l_fot"), std::invalid_argument, "unknown body 'l_fot'", "'l_foot'",
+                           "arm");
+  CAIRN_EXPECT_THROWS_WITH(model.GetJointIndex("r_ankel"), std::invalid_argument, "unknown joint 'r_ankel'",
+                           "'r_ankle'");
+  CAIRN_EXPECT_THROWS_WITH(model.GetFrameIndex("wrld"), std::invalid_argument, "'world'");
 }
 
 TEST(ModelBuilderTest, RejectsBadBodiesAndJoints) {
   ModelBuilder builder("bad");
   builder.AddBody(0, MakeBody("a"), Revolute("ja"));
-  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, MakeBody("a"), Revolute("jb")); },
-                                                {"body name 'a'", "unique"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, MakeBody("b"), Revolute("ja")); },
-                                                {"joint name 'ja'", "unique"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(7, MakeBody("b"), Revolute("jb")); },
-                                                {"body index 7", "out of range"});
-  ExpectThrowWithMessage<std::invalid_argument>(
-      [&] { builder.AddBody(0, MakeBody("b"), Revolute("jb", Eigen::Vector3d::Zero())); },
-      {"joint 'jb'", "axis (0 0 0)", "zero"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, MakeBody("b", -2.0), Revolute("jb")); },
-                                                {"body 'b'", "mass -2"});
+  CAIRN_EXPECT_THROWS_WITH(builder.AddBody(0, MakeBody("a"), Revolute("jb")), std::invalid_argument, "body name 'a'",
+                           "unique");
+  CAIRN_EXPECT_THROWS_WITH(builder.AddBody(0, MakeBody("b"), Revolute("ja")), std::invalid_argument, "joint name 'ja'",
+                           "unique");
+  CAIRN_EXPECT_THROWS_WITH(builder.AddBody(7, MakeBody("b"), Revolute("jb")), std::invalid_argument, "body index 7",
+                           "out of range");
+  CAIRN_EXPECT_THROWS_WITH(builder.AddBody(0, MakeBody("b"), Revolute("jb", Eigen::Vector3d::Zero())),
+                           std::invalid_argument, "joint 'jb'", "axis (0 0 0)", "zero");
+  CAIRN_EXPECT_THROWS_WITH(builder.AddBody(0, MakeBody("b", -2.0), Revolute("jb")), std::invalid_argument, "body 'b'",
+                           "mass -2");
   Body flat = MakeBody("b");
   flat.inertia =
       SpatialInertia::FromMassComInertia(1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 1.0, 0.0).asDiagonal());
-  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, flat, Revolute("jb")); },
-                                                {"body 'b'", "not positive definite"});
+  CAIRN_EXPECT_THROWS_WITH(builder.AddBody(0, flat, Revolute("jb")), std::invalid_argument, "body 'b'",
+                           "not positive definite");
   Joint crossed = Revolute("jb");
   crossed.lower_limit = 2.0;
-  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddBody(0, MakeBody("b"), crossed); },
-                                                {"joint 'jb'", "lower limit 2", "swap"});
+  CAIRN_EXPECT_THROWS_WITH(builder.AddBody(0, MakeBody("b"), crossed), std::invalid_argument, "joint 'jb'",
+                           "lower limit 2", "swap");
   Geometry sphere;
   sphere.name = "ball";
   sphere.type = GeometryType::kSphere;
   sphere.radius = -1.0;
-  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.AddCollisionGeometry(1, sphere); },
-                                                {"body 'a'", "sphere 'ball'", "radius"});
+  CAIRN_EXPECT_THROWS_WITH(builder.AddCollisionGeometry(1, sphere), std::invalid_argument, "body 'a'", "sphere 'ball'",
+                           "radius");
   builder.AddFrame("a", 1, Pose());
-  ExpectThrowWithMessage<std::invalid_argument>([&] { builder.Build(); }, {"frame name 'a'", "body name"});
+  CAIRN_EXPECT_THROWS_WITH(builder.Build(), std::invalid_argument, "frame name 'a'", "body name");
 }
 
 TEST(ModelBuilderTest, RefusesInertiasViolatingTheTriangleInequality) {

@@ -17,7 +17,6 @@
 namespace cairn::multibody {
 namespace {
 
-using test::ExpectThrowWithMessage;
 using ::testing::HasSubstr;
 
 // A two-link arm; `link2_inertial`, `axis` and `extra` let each test break one thing.
@@ -109,68 +108,58 @@ TEST(UrdfParserTest, PackageFoundFromEnclosingRosPackage) {
 }
 
 TEST(UrdfParserTest, AtlasV3NamesTheJointWithTheMissingLink) {
-  ExpectThrowWithMessage<std::runtime_error>([] { ParseUrdfFile(test::AtlasBrokenUrdf()); },
-                                             {"atlas_v3.urdf", "head", "neck_ry"});
+  CAIRN_EXPECT_THROWS_WITH(ParseUrdfFile(test::AtlasBrokenUrdf()), std::runtime_error, "atlas_v3.urdf", "head",
+                           "neck_ry");
 }
 
 TEST(UrdfParserTest, MissingFileIsReported) {
-  ExpectThrowWithMessage<std::runtime_error>([] { ParseUrdfFile("/nonexistent/robot.urdf"); },
-                                             {"/nonexistent/robot.urdf", "cannot open"});
+  CAIRN_EXPECT_THROWS_WITH(ParseUrdfFile("/nonexistent/robot.urdf"), std::runtime_error, "/nonexistent/robot.urdf",
+                           "cannot open");
 }
 
 TEST(UrdfParserTest, MalformedXmlIsReported) {
-  ExpectThrowWithMessage<std::runtime_error>([] { ParseArm("<robot name=\"arm\">\n<link name=\"a\"></robot>"); },
-                                             {"arm.urdf", "malformed XML at line 2"});
-  ExpectThrowWithMessage<std::runtime_error>([] { ParseArm("<robt name=\"arm\"/>"); }, {"arm.urdf", "<robot"});
+  CAIRN_EXPECT_THROWS_WITH(ParseArm("<robot name=\"arm\">\n<link name=\"a\"></robot>"), std::runtime_error, "arm.urdf",
+                           "malformed XML at line 2");
+  CAIRN_EXPECT_THROWS_WITH(ParseArm("<robt name=\"arm\"/>"), std::runtime_error, "arm.urdf", "<robot");
   CAIRN_EXPECT_THROWS_WITH(ParseArm(" \n\t"), std::runtime_error, "arm.urdf: the text is empty");
 }
 
 TEST(UrdfParserTest, NegativeMassIsReported) {
-  ExpectThrowWithMessage<std::runtime_error>(
-      [] {
-        ParseArm(Arm(
-            R"(<inertial><mass value="-1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>)"));
-      },
-      {"arm.urdf", "link 'link2'", "-1", "mass"});
+  CAIRN_EXPECT_THROWS_WITH(
+      ParseArm(
+          Arm(R"(<inertial><mass value="-1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>)")),
+      std::runtime_error, "arm.urdf", "link 'link2'", "-1", "mass");
 }
 
 TEST(UrdfParserTest, NanMassIsReported) {
-  ExpectThrowWithMessage<std::runtime_error>(
-      [] {
-        ParseArm(Arm(
-            R"(<inertial><mass value="nan"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>)"));
-      },
-      {"arm.urdf", "link 'link2'", "nan", "mass"});
+  CAIRN_EXPECT_THROWS_WITH(
+      ParseArm(
+          Arm(R"(<inertial><mass value="nan"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>)")),
+      std::runtime_error, "arm.urdf", "link 'link2'", "nan", "mass");
 }
 
 TEST(UrdfParserTest, IndefiniteInertiaIsReported) {
-  ExpectThrowWithMessage<std::runtime_error>(
-      [] {
-        ParseArm(Arm(
-            R"(<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="-1" ixy="0" ixz="0" iyz="0"/></inertial>)"));
-      },
-      {"arm.urdf", "link2", "not positive definite"});
+  CAIRN_EXPECT_THROWS_WITH(
+      ParseArm(
+          Arm(R"(<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="-1" ixy="0" ixz="0" iyz="0"/></inertial>)")),
+      std::runtime_error, "arm.urdf", "link2", "not positive definite");
 }
 
 TEST(UrdfParserTest, ZeroAxisIsReported) {
-  ExpectThrowWithMessage<std::runtime_error>(
-      [] {
-        ParseArm(
-            Arm(R"(<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>)",
-                "0 0 0"));
-      },
-      {"arm.urdf", "joint 'elbow'", "zero"});
+  CAIRN_EXPECT_THROWS_WITH(
+      ParseArm(
+          Arm(R"(<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>)",
+              "0 0 0")),
+      std::runtime_error, "arm.urdf", "joint 'elbow'", "zero");
 }
 
 TEST(UrdfParserTest, KinematicLoopIsReported) {
   const std::string loop = R"(<joint name="loop" type="fixed"><parent link="link2"/><child link="base"/></joint>)";
-  ExpectThrowWithMessage<std::runtime_error>(
-      [&] {
-        ParseArm(
-            Arm(R"(<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>)",
-                "0 0 1", loop));
-      },
-      {"arm.urdf", "not a valid tree"});
+  CAIRN_EXPECT_THROWS_WITH(
+      ParseArm(
+          Arm(R"(<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>)",
+              "0 0 1", loop)),
+      std::runtime_error, "arm.urdf", "not a valid tree");
 }
 
 TEST(UrdfParserTest, MimicJointIsRejected) {
@@ -180,14 +169,14 @@ TEST(UrdfParserTest, MimicJointIsRejected) {
   <joint name="j1" type="continuous"><parent link="a"/><child link="b"/></joint>
   <joint name="j2" type="continuous"><parent link="b"/><child link="c"/><mimic joint="j1"/></joint>
 </robot>)";
-  ExpectThrowWithMessage<std::runtime_error>([&] { ParseArm(xml); }, {"arm.urdf", "j2", "mimic", "j1"});
+  CAIRN_EXPECT_THROWS_WITH(ParseArm(xml), std::runtime_error, "arm.urdf", "j2", "mimic", "j1");
 }
 
 TEST(UrdfParserTest, MissingMeshFileIsReported) {
   const std::string xml =
       R"(<robot name="m"><link name="a"><collision><geometry><mesh filename="no_such_mesh.stl"/></geometry></collision></link></robot>)";
-  ExpectThrowWithMessage<std::runtime_error>([&] { ParseArm(xml); },
-                                             {"arm.urdf", "link 'a'", "no_such_mesh.stl", "does not exist"});
+  CAIRN_EXPECT_THROWS_WITH(ParseArm(xml), std::runtime_error, "arm.urdf", "link 'a'", "no_such_mesh.stl",
+                           "does not exist");
   UrdfOptions options;
   options.check_mesh_files = false;
   const Model model = ParseUrdfString(xml, "/tmp", options);
@@ -197,7 +186,7 @@ TEST(UrdfParserTest, MissingMeshFileIsReported) {
 TEST(UrdfParserTest, UnknownPackageIsReported) {
   const std::string xml =
       R"(<robot name="m"><link name="a"><visual><geometry><mesh filename="package://nowhere/m.stl"/></geometry></visual></link></robot>)";
-  ExpectThrowWithMessage<std::runtime_error>([&] { ParseArm(xml); }, {"arm.urdf", "package 'nowhere'", "--package"});
+  CAIRN_EXPECT_THROWS_WITH(ParseArm(xml), std::runtime_error, "arm.urdf", "package 'nowhere'", "--package");
 }
 
 // A chain of `links` links joined by revolute joints, as a generator of test robots writes it.
@@ -350,7 +339,7 @@ TEST(UrdfParserTest, WorldRootLinkIsTheWorld) {
   const Model model = ParseArm(xml);
   EXPECT_EQ(model.num_bodies(), 2);
   EXPECT_EQ(model.parent(1), 0);
-  ExpectThrowWithMessage<std::runtime_error>([&] { ParseArm(xml, true); }, {"world", "floating_base"});
+  CAIRN_EXPECT_THROWS_WITH(ParseArm(xml, true), std::runtime_error, "world", "floating_base");
 }
 
 }  // namespace

@@ -14,8 +14,8 @@
 
 #include <Eigen/Geometry>
 
+#include "cairn/common/parallel_for.h"
 #include "cairn/perception/internal/multiversion.h"
-#include "cairn/perception/internal/parallel_rows.h"
 #include "cairn/perception/occupancy/grid_walk.h"
 #include "cairn/perception/occupancy/internal/fast_log.h"
 #include "cairn/perception/occupancy/occupancy_grid.h"
@@ -433,7 +433,7 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
     throw std::invalid_argument("occupancy update: max disparity " + std::to_string(max_disparity) +
                                 " is 2^20 or more; pass the disparity range the matcher searched");
   }
-  // As many threads as ParallelForRows() will run (no more than rows), one accumulator each.
+  // As many threads as ParallelFor() will run (no more than rows), one accumulator each.
   const int threads = std::max(1, std::min(ResolveThreadCount(options.num_threads), height));
   const std::size_t num_cells = grid->num_cells();
   RayAccumulators& accumulators = RayAccumulators::ForThisThread();
@@ -457,7 +457,7 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
   frame.min_visibility = static_cast<float>(options.min_visibility);
   // Thread t takes rows t, t + threads, ...: the cost of a row varies smoothly over the image (with the depth of
   // what it sees), so interleaved rows balance the threads where contiguous bands did not.
-  ParallelForRows(threads, threads, [&](int thread, int, int) {
+  ParallelFor(threads, threads, [&](int thread, int, int) {
     RayIntegrator integrator(frame, accumulators.per_thread[thread].data());
     std::vector<uint8_t> has_curve(width);
     for (int y = thread; y < height; y += threads) {
@@ -468,7 +468,7 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
   });
   // Integer sums: splitting the cells across threads cannot change the result. One contiguous chunk per thread,
   // which also clears the accumulators for the next call.
-  ParallelForRows(threads, threads, [&](int, int chunk_begin, int chunk_end) {
+  ParallelFor(threads, threads, [&](int, int chunk_begin, int chunk_end) {
     const std::size_t begin = num_cells * static_cast<std::size_t>(chunk_begin) / static_cast<std::size_t>(threads);
     const std::size_t end = num_cells * static_cast<std::size_t>(chunk_end) / static_cast<std::size_t>(threads);
     for (std::size_t i = begin; i < end; ++i) {

@@ -5,13 +5,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "../throws_message.h"
 #include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
-using test::MessageOf;
 using ::testing::HasSubstr;
 
 TEST(SolverOptionsTest, StoresTypedValuesPerSolver) {
@@ -26,8 +24,8 @@ TEST(SolverOptionsTest, StoresTypedValuesPerSolver) {
   EXPECT_TRUE(options.Get("least_squares").empty());
   EXPECT_EQ(SolverOptions::ToString(options.Get("ipopt").at("tol")), "1e-09");
   EXPECT_EQ(SolverOptions::ToString(options.Get("ipopt").at("mu_strategy")), "'adaptive'");
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] { options.Set("", "tol", 1.0); }),
-              HasSubstr("both the solver key (e.g. 'ipopt') and the option name must be non-empty"));
+  CAIRN_EXPECT_THROWS_WITH(options.Set("", "tol", 1.0), std::invalid_argument,
+                           "both the solver key (e.g. 'ipopt') and the option name must be non-empty");
 }
 
 TEST(SolverOptionsTest, RefusesNanValues) {

@@ -179,19 +179,19 @@ TEST(BuiltinMaterialSegmenterTrainTest, BadTrainingInputsAreNamed) {
 void WriteText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 TEST(BuiltinMaterialSegmenterLoadTest, BadFilesGiveClearErrors) {
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load("/nonexistent/model.yaml"), std::runtime_error,
-                           "cannot open '/nonexistent/model.yaml'", "cairn friction-train --out");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load("/nonexistent/model.yaml"), std::invalid_argument,
+                           "Cannot read '/nonexistent/model.yaml'", "cairn friction-train --out");
   const std::string path = TempPath("bad.yaml");
   WriteText(path, "format: [unclosed\n");
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "is not valid YAML", "line");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "Malformed YAML in", "line");
   WriteText(path, "format: something_else\nversion: 1\n");
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error,
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument,
                            "not a built-in material segmenter model");
   WriteText(path, "format: cairn_builtin_material_segmenter\nversion: 9\n");
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "has version 9",
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "line 2", "has version 9",
                            "reads version 1");
   WriteText(path, "format: cairn_builtin_material_segmenter\nversion: 1\nlabels: [a, b]\nwindow: 15\n");
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "has no key 'stride'");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "missing key 'stride'");
 
   // A real model, truncated: its weight matrices lose values.
   const TrainingSet set = Renders(300, 2);
@@ -207,16 +207,17 @@ TEST(BuiltinMaterialSegmenterLoadTest, BadFilesGiveClearErrors) {
   std::string broken = text;
   broken.replace(data, text.find(']', data) - data, "1.5");  // w2 keeps one value of its 56.
   WriteText(path, broken);
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "malformed 'w2'",
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "malformed 'w2'",
                            "got rows 14, cols 4 and 1 values");
   std::string wrong_type = text;
   wrong_type.replace(wrong_type.find("temperature: "), 13, "temperature: warm #");
   WriteText(path, wrong_type);
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "wrong type", "line");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument,
+                           "'temperature' must be a number, got 'warm'", "line");
   std::string negative = text;
   negative.replace(negative.find("temperature: "), 13, "temperature: -");
   WriteText(path, negative);
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "temperature -",
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "temperature -",
                            "must be positive");
   std::remove(path.c_str());
 }

@@ -60,16 +60,23 @@ TEST(MaterialRegistryTest, MalformedFilesNameTheKeyAndTheLine) {
                            "unknown distribution 'lognormal'");
   Write(path, "materials:\n  - label: tile\n    mean: high\n    stddev: 0.1\n");
   CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "line 3",
-                           "'mean' must be a number; got 'high'");
+                           "'mean' must be a number, got 'high'");
   Write(path, "materials: [\n");
   CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "Malformed YAML");
   Write(path, "- {label: a}\n");
-  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "'materials'");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument,
+                           "must hold a YAML mapping");
+  Write(path, "material:\n  - {label: a}\n");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "line 1",
+                           "unknown key 'material'", "Did you mean 'materials'?");
+  Write(path, "materials:\n  - {label: a, distribution: normal, mean: 0.5, stddev: 0.1, mean: 0.6}\n");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "line 2",
+                           "the key 'mean' appears twice");
   Write(path, "materials:\n  - {label: a, distribution: not_walkable}\n  - {label: a, distribution: not_walkable}\n");
   CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "'a' appears twice");
   fs::remove(path);
   CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml("/nonexistent/registry.yaml"), std::invalid_argument,
-                           "Cannot read the material registry '/nonexistent/registry.yaml'");
+                           "Cannot read '/nonexistent/registry.yaml'");
 }
 
 TEST(MaterialRegistryTest, MeasuredContactIsANormalNormalUpdate) {

@@ -128,26 +128,30 @@ TEST(OccupancyScenarioTest, ExplicitPosesAndTheBarsScenarioAgree) {
 TEST(OccupancyScenarioTest, ErrorsNameTheFileTheKeyAndTheLine) {
   auto expect_error = [](const std::string& name, const std::string& text, const std::string& key, int line) {
     const std::string path = Write(name, text);
-    CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml(path), std::runtime_error,
-                             "occupancy scenario '" + path + "', line " + std::to_string(line) + ": '" + key + "'");
+    CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml(path), std::invalid_argument,
+                             "In '" + path + "' line " + std::to_string(line) + ": " + key);
   };
   expect_error("negative.yaml", Replace(kValid, "[0.25, 0.25, 0.25]", "[0.25, -0.25, 0.25]"),
-               "objects[1].half_extents", 20);
-  expect_error("typo.yaml", Replace(kValid, "  baseline: 0.2", "  basline: 0.2"), "camera.basline", 5);
-  expect_error("missing.yaml", Replace(kValid, "  fx: 60\n", ""), "camera.fx", 2);
-  expect_error("type.yaml", Replace(kValid, "  width: 64", "  width: wide"), "camera.width", 2);
-  expect_error("texture.yaml", Replace(kValid, "    texture: crate", "    texture: crates"), "objects[1].texture", 22);
-  expect_error("kind.yaml", Replace(kValid, "  - type: box", "  - type: sphere"), "objects[1].type", 18);
-  expect_error("range.yaml", Replace(kValid, "max_disparity: 20", "max_disparity: 64"), "stereo.max_disparity", 8);
-  expect_error("dims.yaml", Replace(kValid, "[20, 20, 8]", "[20, 20]"), "grid.dims", 35);
-  expect_error("both.yaml", Replace(kValid, "trajectory:\n", "trajectory:\n  poses: []\n"), "trajectory", 25);
+               "'objects[1].half_extents'", 20);
+  expect_error("typo.yaml", Replace(kValid, "  baseline: 0.2", "  basline: 0.2"), "unknown key 'basline' in 'camera'",
+               5);
+  expect_error("missing.yaml", Replace(kValid, "  fx: 60\n", ""), "'camera.fx'", 2);
+  expect_error("type.yaml", Replace(kValid, "  width: 64", "  width: wide"), "'camera.width'", 2);
+  expect_error("texture.yaml", Replace(kValid, "    texture: crate", "    texture: crates"), "'objects[1].texture'",
+               22);
+  expect_error("kind.yaml", Replace(kValid, "  - type: box", "  - type: sphere"), "'objects[1].type'", 18);
+  expect_error("range.yaml", Replace(kValid, "max_disparity: 20", "max_disparity: 64"), "'stereo.max_disparity'", 8);
+  expect_error("dims.yaml", Replace(kValid, "[20, 20, 8]", "[20, 20]"), "'grid.dims'", 35);
+  expect_error("both.yaml", Replace(kValid, "trajectory:\n", "trajectory:\n  poses: []\n"), "'trajectory'", 25);
+  expect_error("twice.yaml", Replace(kValid, "  baseline: 0.2", "  baseline: 0.2\n  fx: 70"),
+               "the key 'fx' appears twice in one mapping (first at line 4)", 6);
 
   const std::string typo = Write("suggest.yaml", Replace(kValid, "  baseline: 0.2", "  basline: 0.2"));
-  CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml(typo), std::runtime_error, "did you mean 'baseline'?");
-  CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml("/no/such/scene.yaml"), std::runtime_error,
-                           "'/no/such/scene.yaml' cannot be read");
+  CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml(typo), std::invalid_argument, "Did you mean 'baseline'?");
+  CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml("/no/such/scene.yaml"), std::invalid_argument,
+                           "Cannot read '/no/such/scene.yaml'");
   const std::string broken = Write("broken.yaml", "camera: [1, 2\n");
-  CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml(broken), std::runtime_error, "is not valid YAML");
+  CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml(broken), std::invalid_argument, "Malformed YAML in", "line 2");
   CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::LookAt(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 2)),
                            std::invalid_argument, "straight up or down");
 }

@@ -108,13 +108,15 @@ TEST(FootstepScenarioTest, ErrorsNameTheFileLineAndKey) {
                            std::invalid_argument, "line 9", "planner 'lattice' must be in [0.01, 0.5] m");
   CAIRN_EXPECT_THROWS_WITH(
       FootstepScenario::Load(Scratch("inf.yaml", std::string(text).replace(text.find("max: [2, 1]"), 11, "max: [.inf, 1]"))),
-      std::invalid_argument, "terrain 'max' must exceed 'min' in x and y, both finite");
+      std::invalid_argument, "line 4", "'max' must be a finite number, got '.inf'");
   CAIRN_EXPECT_THROWS_WITH(
       FootstepScenario::Load(Scratch("huge.yaml", std::string(text).replace(text.find("max: [2, 1]"), 11, "max: [1e5, 1e5]"))),
       std::invalid_argument, "at most 5e+07 are supported");
   CAIRN_EXPECT_THROWS_WITH(
       FootstepScenario::Load(Scratch("nan.yaml", std::string(text).replace(text.find("[1.5, 0.1, 0]"), 13, "[1.5, 0.1, .nan]"))),
-      std::invalid_argument, "line 8", "'left' must hold finite numbers");
+      std::invalid_argument, "line 8", "'left' must be a finite number, got '.nan'");
+  CAIRN_EXPECT_THROWS_WITH(FootstepScenario::Load(Scratch("twice.yaml", text + "name: again\n")), std::invalid_argument,
+                           "twice.yaml' line 9", "the key 'name' appears twice in one mapping (first at line 1)");
   CAIRN_EXPECT_THROWS_WITH(FootstepScenario::Load(Scratch("broken.yaml", "name: [unclosed\n")), std::invalid_argument,
                            "Malformed YAML in", "broken.yaml");
   CAIRN_EXPECT_THROWS_WITH(FootstepScenario::Load("/nonexistent/scenario.yaml"), std::invalid_argument,
