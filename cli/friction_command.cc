@@ -12,6 +12,7 @@
 
 #include "cairn/common/atomic_output_directory.h"
 #include "cairn/common/json_writer.h"
+#include "cairn/common/number_text.h"
 #include "cairn/perception/friction/friction_quantile_image.h"
 #include "cairn/perception/friction/make_material_segmenter.h"
 #include "cairn/perception/friction/material_registry.h"
@@ -80,8 +81,8 @@ int Run(const FrictionArguments& args) {
     throw std::runtime_error("Cannot decode the image '" + args.image + "'; give a PNG, JPEG or PGM file.");
   }
   if (image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
-    throw std::invalid_argument("The image '" + args.image + "' has " + std::to_string(image.channels()) +
-                                " channel(s) of depth " + std::to_string(image.depth()) +
+    throw std::invalid_argument("The image '" + args.image + "' has " + cairn::FormatShort(image.channels()) +
+                                " channel(s) of depth " + cairn::FormatShort(image.depth()) +
                                 "; friction needs an 8-bit grey or colour image.");
   }
   const MaterialRegistry registry =

@@ -54,10 +54,10 @@ int RunFrictionTrain(const FrictionTrainState& s) {
   // The training renders are all held in memory: bound their pixels before rendering any.
   const double pixels = static_cast<double>(s.images) * s.width * s.height;
   if (pixels > kMaxTrainingPixels) {
-    throw UsageError("--images " + std::to_string(s.images) + " of " + std::to_string(s.width) + "x" +
-                     std::to_string(s.height) + " pixels is " + FormatShort(pixels) +
+    throw UsageError("--images " + cairn::FormatShort(s.images) + " of " + cairn::FormatShort(s.width) + "x" +
+                     cairn::FormatShort(s.height) + " pixels is " + FormatShort(pixels) +
                      " pixels to hold in memory, more than the limit of " +
-                     std::to_string(static_cast<long long>(kMaxTrainingPixels)) +
+                     cairn::FormatShort(static_cast<long long>(kMaxTrainingPixels)) +
                      "; use fewer or smaller images");
   }
   // Before the training: an --out that cannot be written fails now, not minutes later.

@@ -109,7 +109,7 @@ CLI::Option* AddNumberOption(CLI::App& app, const std::string& name, T* value, c
       description + "; " + range.Describe(kInteger));
   option->type_name(kInteger ? "INT" : "NUMBER");
   if constexpr (kInteger) {
-    option->default_str(std::to_string(*value));
+    option->default_str(cairn::FormatShort(*value));
   } else {
     option->default_str(FormatShort(static_cast<double>(*value)));
   }

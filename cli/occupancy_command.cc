@@ -11,6 +11,7 @@
 
 #include "cairn/common/atomic_file.h"
 #include "cairn/common/json_writer.h"
+#include "cairn/common/number_text.h"
 #include "cairn/perception/evaluation/occupancy_score.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
 #include "cairn/perception/occupancy/wta_range_sensor_model.h"
@@ -73,8 +74,8 @@ int RunOccupancy(const OccupancyState& s) {
     scenario = OccupancyScenario::FromYaml(s.scenario);
     if (s.frames_given) {
       if (s.frames > static_cast<int>(scenario.trajectory.size())) {
-        throw std::invalid_argument("--frames " + std::to_string(s.frames) + ": scenario '" + s.scenario + "' has " +
-                                    std::to_string(scenario.trajectory.size()) + " frames; ask for 1 to that many");
+        throw std::invalid_argument("--frames " + cairn::FormatShort(s.frames) + ": scenario '" + s.scenario + "' has " +
+                                    cairn::FormatShort(scenario.trajectory.size()) + " frames; ask for 1 to that many");
       }
       scenario.trajectory.resize(static_cast<std::size_t>(s.frames));
     }

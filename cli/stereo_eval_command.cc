@@ -93,15 +93,15 @@ int RunStereoEval(const StereoEvalState& s) {
     if (!s.gt_right.empty()) gt_right = LoadDisparityImage(s.gt_right, s.gt_scale);
   }
   if (left.size() != right.size()) {
-    throw std::invalid_argument("left image '" + s.left + "' is " + std::to_string(left.cols) + "x" +
-                                std::to_string(left.rows) + " but right image '" + s.right + "' is " +
-                                std::to_string(right.cols) + "x" + std::to_string(right.rows) +
+    throw std::invalid_argument("left image '" + s.left + "' is " + cairn::FormatShort(left.cols) + "x" +
+                                cairn::FormatShort(left.rows) + " but right image '" + s.right + "' is " +
+                                cairn::FormatShort(right.cols) + "x" + cairn::FormatShort(right.rows) +
                                 "; pass a rectified pair of equal size");
   }
   if (gt.size() != left.size()) {
-    throw std::invalid_argument("ground truth '" + s.gt + "' is " + std::to_string(gt.cols) + "x" +
-                                std::to_string(gt.rows) + " but the images are " + std::to_string(left.cols) + "x" +
-                                std::to_string(left.rows) + "; pass the left view's disparity map");
+    throw std::invalid_argument("ground truth '" + s.gt + "' is " + cairn::FormatShort(gt.cols) + "x" +
+                                cairn::FormatShort(gt.rows) + " but the images are " + cairn::FormatShort(left.cols) + "x" +
+                                cairn::FormatShort(left.rows) + "; pass the left view's disparity map");
   }
   cv::Mat occluded;
   if (!s.gt_right.empty()) {

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <vector>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/text_suggestions.h"
 
 namespace cairn::cli {
@@ -41,7 +42,7 @@ std::string UsageMessage(const CLI::ParseError& error, const CLI::App& app) {
     if (message.find(": At Most ") != std::string::npos) {
       for (const CLI::Option* option : app.get_options()) {
         if (option->count() > 1) {
-          return option->get_name() + " is given " + std::to_string(option->count()) + " times; give it once";
+          return option->get_name() + " is given " + cairn::FormatShort(option->count()) + " times; give it once";
         }
       }
       return LeadingName(message) + " is given more than once; give it once";

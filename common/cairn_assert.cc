@@ -1,4 +1,5 @@
 #include "cairn/common/cairn_assert.h"
+#include "cairn/common/number_text.h"
 
 #include <stdexcept>
 #include <string>
@@ -7,7 +8,7 @@ namespace cairn::internal {
 
 void AssertionFailed(const char* condition, const char* function, const char* file, int line) {
   throw std::logic_error(std::string("Cairn internal check failed: '") + condition + "' in " + function + "() at " +
-                         file + ":" + std::to_string(line) + ". This is a bug in Cairn; please report it.");
+                         file + ":" + cairn::FormatShort(line) + ". This is a bug in Cairn; please report it.");
 }
 
 }  // namespace cairn::internal

@@ -46,7 +46,7 @@ std::shared_ptr<Mesh> ReadStl(const std::string& path, const Eigen::Vector3d& sc
     bytes.append(buffer, static_cast<std::size_t>(in.gcount()));
   }
   if (bytes.size() > kMaxMeshBytes) {
-    throw std::invalid_argument(owner + ": mesh '" + path + "' is larger than " + std::to_string(kMaxMeshBytes) +
+    throw std::invalid_argument(owner + ": mesh '" + path + "' is larger than " + cairn::FormatShort(kMaxMeshBytes) +
                                 " bytes (256 MiB, kMaxMeshBytes); simplify the mesh for collision queries");
   }
   std::vector<fcl::Vector3d> vertices;
@@ -82,7 +82,7 @@ std::shared_ptr<Mesh> ReadStl(const std::string& path, const Eigen::Vector3d& sc
       if (word != "vertex") continue;
       Eigen::Vector3d v;
       if (!(text >> v.x() >> v.y() >> v.z())) {
-        throw std::invalid_argument(owner + ": mesh '" + path + "': vertex " + std::to_string(vertices.size()) +
+        throw std::invalid_argument(owner + ": mesh '" + path + "': vertex " + cairn::FormatShort(vertices.size()) +
                                     " does not hold three numbers; the ASCII STL file is corrupt");
       }
       add(v);
@@ -90,7 +90,7 @@ std::shared_ptr<Mesh> ReadStl(const std::string& path, const Eigen::Vector3d& sc
   }
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     if (!vertices[i].allFinite()) {
-      throw std::invalid_argument(owner + ": mesh '" + path + "': vertex " + std::to_string(i) +
+      throw std::invalid_argument(owner + ": mesh '" + path + "': vertex " + cairn::FormatShort(i) +
                                   " is not finite (NaN or infinite); the STL file is corrupt");
     }
   }
@@ -519,7 +519,7 @@ void CollisionWorld::UpdatePoses(const Model& model, const Data& data) {
     throw std::invalid_argument(
         "CollisionWorld::UpdatePoses: the model or data is not the one the world was built "
         "from (" +
-        std::to_string(impl_->parents.size()) + " bodies)");
+        cairn::FormatShort(impl_->parents.size()) + " bodies)");
   }
   for (Impl::Item& item : impl_->items) {
     if (item.body < 0) continue;
@@ -548,8 +548,8 @@ int CollisionWorld::GetGeometryIndex(const std::string& name) const {
 bool CollisionWorld::IsPairChecked(int a, int b) const {
   const int n = num_geometries();
   if (a < 0 || a >= n || b < 0 || b >= n) {
-    throw std::invalid_argument("CollisionWorld::IsPairChecked: geometry indices " + std::to_string(a) + ", " +
-                                std::to_string(b) + " must lie in [0, " + std::to_string(n) + ")");
+    throw std::invalid_argument("CollisionWorld::IsPairChecked: geometry indices " + cairn::FormatShort(a) + ", " +
+                                cairn::FormatShort(b) + " must lie in [0, " + cairn::FormatShort(n) + ")");
   }
   return impl_->Checked(a, b);
 }
@@ -557,8 +557,8 @@ bool CollisionWorld::IsPairChecked(int a, int b) const {
 ShapeDistance CollisionWorld::ComputeDistance(int a, int b) const {
   const int n = num_geometries();
   if (a < 0 || a >= n || b < 0 || b >= n) {
-    throw std::invalid_argument("CollisionWorld::ComputeDistance: geometry indices " + std::to_string(a) + ", " +
-                                std::to_string(b) + " must lie in [0, " + std::to_string(n) + ")");
+    throw std::invalid_argument("CollisionWorld::ComputeDistance: geometry indices " + cairn::FormatShort(a) + ", " +
+                                cairn::FormatShort(b) + " must lie in [0, " + cairn::FormatShort(n) + ")");
   }
   return impl_->Distance(a, b);
 }
@@ -610,7 +610,7 @@ void CollisionWorld::DistanceGradient(const Model& model, const Data& data, cons
                                       Eigen::Ref<Eigen::VectorXd> gradient) const {
   if (gradient.size() != model.nv()) {
     throw std::invalid_argument("CollisionWorld::DistanceGradient: gradient has size " +
-                                std::to_string(gradient.size()) + ", expected nv = " + std::to_string(model.nv()));
+                                cairn::FormatShort(gradient.size()) + ", expected nv = " + cairn::FormatShort(model.nv()));
   }
   gradient.setZero();
   const Eigen::Vector3d& n = pair.result.normal;

@@ -14,15 +14,15 @@ namespace {
 
 void CheckQ(const Model& model, Eigen::Index size, const char* caller, const char* name = "q") {
   if (size != model.nq()) {
-    throw std::invalid_argument(std::string(caller) + ": " + name + " has size " + std::to_string(size) +
-                                " but model '" + model.name() + "' has nq = " + std::to_string(model.nq()));
+    throw std::invalid_argument(std::string(caller) + ": " + name + " has size " + cairn::FormatShort(size) +
+                                " but model '" + model.name() + "' has nq = " + cairn::FormatShort(model.nq()));
   }
 }
 
 void CheckV(const Model& model, Eigen::Index size, const char* caller) {
   if (size != model.nv()) {
-    throw std::invalid_argument(std::string(caller) + ": v has size " + std::to_string(size) + " but model '" +
-                                model.name() + "' has nv = " + std::to_string(model.nv()));
+    throw std::invalid_argument(std::string(caller) + ": v has size " + cairn::FormatShort(size) + " but model '" +
+                                model.name() + "' has nv = " + cairn::FormatShort(model.nv()));
   }
 }
 

@@ -1,3 +1,4 @@
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/data.h>
 
 #include <stdexcept>
@@ -9,8 +10,8 @@ namespace {
 // Runs before any buffer is sized.
 int CheckedNv(const Model& model) {
   if (model.nv() > kMaxDataVelocities) {
-    throw std::invalid_argument("model '" + model.name() + "' has " + std::to_string(model.nv()) +
-                                " velocity coordinates; a Data serves at most " + std::to_string(kMaxDataVelocities) +
+    throw std::invalid_argument("model '" + model.name() + "' has " + cairn::FormatShort(model.nv()) +
+                                " velocity coordinates; a Data serves at most " + cairn::FormatShort(kMaxDataVelocities) +
                                 " (kMaxDataVelocities), since it holds dense nv x nv matrices");
   }
   return model.nv();

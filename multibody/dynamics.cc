@@ -1,3 +1,4 @@
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/dynamics.h>
 
 #include <stdexcept>
@@ -99,7 +100,7 @@ const Eigen::VectorXd& ForwardDynamics(const Model& model, Data& data, const Eig
   for (int k = nv - 1; k >= 0; --k) {
     if (!(H(k, k) > 0.0)) {
       throw std::runtime_error("ForwardDynamics: the mass matrix of model '" + model.name() +
-                               "' is not positive definite (velocity " + std::to_string(k) + ", joint '" +
+                               "' is not positive definite (velocity " + cairn::FormatShort(k) + ", joint '" +
                                model.joint(model.velocity_joint(k)).name +
                                "'); every moving joint must carry a body with mass");
     }

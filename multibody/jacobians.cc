@@ -1,3 +1,4 @@
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/jacobians.h>
 
 #include <stdexcept>
@@ -11,8 +12,8 @@ namespace cairn::multibody {
 void FrameJacobian(const Model& model, const Data& data, int frame, ReferenceFrame reference,
                    Eigen::Ref<Eigen::MatrixXd> J) {
   if (J.rows() != 6 || J.cols() != model.nv()) {
-    throw std::invalid_argument("FrameJacobian: J is " + std::to_string(J.rows()) + " x " + std::to_string(J.cols()) +
-                                " but must be 6 x nv = 6 x " + std::to_string(model.nv()));
+    throw std::invalid_argument("FrameJacobian: J is " + cairn::FormatShort(J.rows()) + " x " + cairn::FormatShort(J.cols()) +
+                                " but must be 6 x nv = 6 x " + cairn::FormatShort(model.nv()));
   }
   const Pose X_WF = FramePose(model, data, frame);
   const Eigen::Vector3d& p = X_WF.translation();
@@ -45,8 +46,8 @@ void FrameJacobian(const Model& model, Data& data, const Eigen::Ref<const Eigen:
                    ReferenceFrame reference, Eigen::Ref<Eigen::MatrixXd> J) {
   CheckSizes(model, data, "FrameJacobian", q.size());
   if (frame < 0 || frame >= model.num_frames()) {
-    throw std::invalid_argument("FrameJacobian: frame index " + std::to_string(frame) + " is out of range [0, " +
-                                std::to_string(model.num_frames()) + "); look frames up with Model::GetFrameIndex");
+    throw std::invalid_argument("FrameJacobian: frame index " + cairn::FormatShort(frame) + " is out of range [0, " +
+                                cairn::FormatShort(model.num_frames()) + "); look frames up with Model::GetFrameIndex");
   }
   std::size_t depth = 0;
   for (int i = model.frames()[static_cast<std::size_t>(frame)].body; i > 0; i = model.parent(i)) {

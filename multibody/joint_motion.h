@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/joint.h>
 #include <cairn/multibody/pose.h>
 
@@ -31,7 +32,7 @@ inline Eigen::Matrix3d QuaternionRotation(const double* quaternion_wxyz, const s
   const Eigen::Quaterniond quat(quaternion_wxyz[0], quaternion_wxyz[1], quaternion_wxyz[2], quaternion_wxyz[3]);
   const double norm = quat.norm();
   if (!(std::abs(norm - 1.0) <= 1e-3)) {
-    throw std::invalid_argument("floating joint '" + joint_name + "': quaternion has norm " + std::to_string(norm) +
+    throw std::invalid_argument("floating joint '" + joint_name + "': quaternion has norm " + cairn::FormatShort(norm) +
                                 ", expected a unit quaternion (w, x, y, z); normalize it (see NormalizeConfiguration)");
   }
   return Eigen::Quaterniond(quat.w() / norm, quat.x() / norm, quat.y() / norm, quat.z() / norm).toRotationMatrix();

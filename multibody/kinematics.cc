@@ -1,3 +1,4 @@
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/kinematics.h>
 
 #include <stdexcept>
@@ -11,22 +12,22 @@ void CheckSizes(const Model& model, const Data& data, const char* caller, Eigen:
                 Eigen::Index a_size) {
   if (data.nq != model.nq() || data.nv != model.nv() || static_cast<int>(data.X_world.size()) != model.num_bodies()) {
     throw std::invalid_argument(std::string(caller) + ": the Data was made for another model (nq " +
-                                std::to_string(data.nq) + ", nv " + std::to_string(data.nv) + ") than '" +
-                                model.name() + "' (nq " + std::to_string(model.nq()) + ", nv " +
-                                std::to_string(model.nv()) + "); create it with Data(model)");
+                                cairn::FormatShort(data.nq) + ", nv " + cairn::FormatShort(data.nv) + ") than '" +
+                                model.name() + "' (nq " + cairn::FormatShort(model.nq()) + ", nv " +
+                                cairn::FormatShort(model.nv()) + "); create it with Data(model)");
   }
   if (q_size != model.nq()) {
-    throw std::invalid_argument(std::string(caller) + ": q has size " + std::to_string(q_size) + " but model '" +
-                                model.name() + "' has nq = " + std::to_string(model.nq()));
+    throw std::invalid_argument(std::string(caller) + ": q has size " + cairn::FormatShort(q_size) + " but model '" +
+                                model.name() + "' has nq = " + cairn::FormatShort(model.nq()));
   }
   if (v_size >= 0 && v_size != model.nv()) {
-    throw std::invalid_argument(std::string(caller) + ": v has size " + std::to_string(v_size) + " but model '" +
-                                model.name() + "' has nv = " + std::to_string(model.nv()));
+    throw std::invalid_argument(std::string(caller) + ": v has size " + cairn::FormatShort(v_size) + " but model '" +
+                                model.name() + "' has nv = " + cairn::FormatShort(model.nv()));
   }
   if (a_size >= 0 && a_size != model.nv()) {
     throw std::invalid_argument(std::string(caller) + ": the acceleration/torque vector has size " +
-                                std::to_string(a_size) + " but model '" + model.name() +
-                                "' has nv = " + std::to_string(model.nv()));
+                                cairn::FormatShort(a_size) + " but model '" + model.name() +
+                                "' has nv = " + cairn::FormatShort(model.nv()));
   }
 }
 
@@ -81,8 +82,8 @@ void ForwardKinematics(const Model& model, Data& data, const Eigen::Ref<const Ei
 
 Pose FramePose(const Model& model, const Data& data, int frame) {
   if (frame < 0 || frame >= model.num_frames()) {
-    throw std::invalid_argument("FramePose: frame index " + std::to_string(frame) + " is out of range [0, " +
-                                std::to_string(model.num_frames()) + "); look frames up with Model::GetFrameIndex");
+    throw std::invalid_argument("FramePose: frame index " + cairn::FormatShort(frame) + " is out of range [0, " +
+                                cairn::FormatShort(model.num_frames()) + "); look frames up with Model::GetFrameIndex");
   }
   const Frame& f = model.frames()[static_cast<std::size_t>(frame)];
   return data.X_world[static_cast<std::size_t>(f.body)] * f.X_BF;
@@ -90,8 +91,8 @@ Pose FramePose(const Model& model, const Data& data, int frame) {
 
 Vector6d FrameVelocity(const Model& model, const Data& data, int frame) {
   if (frame < 0 || frame >= model.num_frames()) {
-    throw std::invalid_argument("FrameVelocity: frame index " + std::to_string(frame) + " is out of range [0, " +
-                                std::to_string(model.num_frames()) + "); look frames up with Model::GetFrameIndex");
+    throw std::invalid_argument("FrameVelocity: frame index " + cairn::FormatShort(frame) + " is out of range [0, " +
+                                cairn::FormatShort(model.num_frames()) + "); look frames up with Model::GetFrameIndex");
   }
   const Frame& f = model.frames()[static_cast<std::size_t>(frame)];
   return f.X_BF.InverseActMotion(data.v[static_cast<std::size_t>(f.body)]);

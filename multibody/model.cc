@@ -1,3 +1,4 @@
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/model.h>
 
 #include <stdexcept>
@@ -17,7 +18,7 @@ int Lookup(const std::map<std::string, int>& index, const std::string& name, con
   const std::vector<std::string> closest = ClosestNames(name, names);
   std::string message = std::string("unknown ") + kind + " '" + name + "' in model '" + model_name + "'";
   if (!closest.empty()) message += "; did you mean " + QuotedList(closest) + "?";
-  message += " (the model has " + std::to_string(names.size()) + " " + kind + "s)";
+  message += " (the model has " + cairn::FormatShort(names.size()) + " " + kind + "s)";
   throw std::invalid_argument(message);
 }
 

@@ -96,8 +96,8 @@ ModelBuilder::ModelBuilder(std::string model_name) {
 
 void ModelBuilder::CheckBodyIndex(int body, const char* what) const {
   if (body < 0 || body >= num_bodies()) {
-    throw std::invalid_argument(std::string(what) + ": body index " + std::to_string(body) +
-                                " is out of range; the builder has bodies 0.." + std::to_string(num_bodies() - 1));
+    throw std::invalid_argument(std::string(what) + ": body index " + cairn::FormatShort(body) +
+                                " is out of range; the builder has bodies 0.." + cairn::FormatShort(num_bodies() - 1));
   }
 }
 
@@ -115,7 +115,7 @@ int ModelBuilder::AddBody(int parent, Body body, Joint joint) {
   CheckBodyIndex(parent, ("AddBody('" + body.name + "')").c_str());
   if (num_bodies() > kMaxModelBodies) {
     throw std::invalid_argument("AddBody('" + body.name + "'): the model already has " +
-                                std::to_string(kMaxModelBodies) + " bodies besides the world, the most a model may have (kMaxModelBodies)");
+                                cairn::FormatShort(kMaxModelBodies) + " bodies besides the world, the most a model may have (kMaxModelBodies)");
   }
   if (body.name.empty()) throw std::invalid_argument("AddBody: the body needs a name");
   if (joint.name.empty()) throw std::invalid_argument("AddBody('" + body.name + "'): its joint needs a name");

@@ -284,7 +284,7 @@ class UrdfReader {
   void AddGeometry(ModelBuilder& builder, const urdf::Link& link, int body) {
     for (std::size_t k = 0; k < link.collision_array.size(); ++k) {
       const urdf::Collision& c = *link.collision_array[k];
-      const std::string name = c.name.empty() ? link.name + "_collision_" + std::to_string(k) : c.name;
+      const std::string name = c.name.empty() ? link.name + "_collision_" + cairn::FormatShort(k) : c.name;
       try {
         builder.AddCollisionGeometry(body, ToGeometry(link, c.geometry, c.origin, name, "collision"));
       } catch (const std::invalid_argument& e) {
@@ -293,7 +293,7 @@ class UrdfReader {
     }
     for (std::size_t k = 0; k < link.visual_array.size(); ++k) {
       const urdf::Visual& v = *link.visual_array[k];
-      const std::string name = v.name.empty() ? link.name + "_visual_" + std::to_string(k) : v.name;
+      const std::string name = v.name.empty() ? link.name + "_visual_" + cairn::FormatShort(k) : v.name;
       try {
         builder.AddVisualGeometry(body, ToGeometry(link, v.geometry, v.origin, name, "visual"));
       } catch (const std::invalid_argument& e) {
@@ -329,7 +329,7 @@ Model ParseUrdfFile(const std::string& path, const UrdfOptions& options) {
   }
   if (in.bad()) throw std::runtime_error(path + ": reading the URDF file failed");
   if (text.size() > kMaxUrdfBytes) {
-    throw std::runtime_error(path + ": the file is larger than " + std::to_string(kMaxUrdfBytes) +
+    throw std::runtime_error(path + ": the file is larger than " + cairn::FormatShort(kMaxUrdfBytes) +
                              " bytes (64 MiB, kMaxUrdfBytes), the most a URDF may have; check that this is the URDF file");
   }
   const std::string directory = fs::absolute(fs::path(path)).parent_path().string();

@@ -24,7 +24,7 @@ bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' ||
 std::string Quoted(std::string_view text) {
   constexpr std::size_t kShown = 40;
   if (text.size() <= kShown) return "\"" + std::string(text) + "\"";
-  return "\"" + std::string(text.substr(0, kShown)) + "...\" (" + std::to_string(text.size()) + " characters)";
+  return "\"" + std::string(text.substr(0, kShown)) + "...\" (" + cairn::FormatShort(text.size()) + " characters)";
 }
 
 // Reads exactly `count` finite numbers separated by white space; returns why not, or "" on success. Locale-
@@ -40,7 +40,7 @@ std::string ReadNumbers(const char* text, int count, double* out) {
     while (token_end < end && !IsSpace(*token_end)) ++token_end;
     const std::string_view token(p, static_cast<std::size_t>(token_end - p));
     if (n == count) {
-      return "holds more than " + std::to_string(count) + (count == 1 ? " number" : " numbers");
+      return "holds more than " + cairn::FormatShort(count) + (count == 1 ? " number" : " numbers");
     }
     const char* first = p;
     if (*first == '+' && first + 1 < token_end && first[1] != '-') ++first;
@@ -53,7 +53,7 @@ std::string ReadNumbers(const char* text, int count, double* out) {
     p = token_end;
   }
   if (n < count) {
-    return "holds " + std::to_string(n) + (n == 1 ? " number" : " numbers") + " where " + std::to_string(count) +
+    return "holds " + cairn::FormatShort(n) + (n == 1 ? " number" : " numbers") + " where " + cairn::FormatShort(count) +
            (count == 1 ? " is" : " are") + " expected";
   }
   return "";
@@ -66,7 +66,7 @@ class ElementChecker {
 
   [[noreturn]] void Fail(const TiXmlElement& element, const char* attribute, const std::string& why) const {
     const char* value = element.Attribute(attribute);
-    throw std::runtime_error(source_ + ": " + owner_ + " (line " + std::to_string(element.Row()) + "): <" +
+    throw std::runtime_error(source_ + ": " + owner_ + " (line " + cairn::FormatShort(element.Row()) + "): <" +
                              element.Value() + " " + attribute + "=" + Quoted(value == nullptr ? "" : value) +
                              ">: " + why);
   }
@@ -220,8 +220,8 @@ void UrdfXmlCheck::Fail(const std::string& what) const { throw std::runtime_erro
 
 void UrdfXmlCheck::CheckSizeAndNesting(const std::string& xml) const {
   if (xml.size() > kMaxUrdfBytes) {
-    Fail("the text is " + std::to_string(xml.size()) + " bytes, more than the limit of " +
-         std::to_string(kMaxUrdfBytes) +
+    Fail("the text is " + cairn::FormatShort(xml.size()) + " bytes, more than the limit of " +
+         cairn::FormatShort(kMaxUrdfBytes) +
          " (64 MiB, kMaxUrdfBytes); robot descriptions are far smaller, so check that this is the URDF file");
   }
   // Mirrors how TinyXML tells markup apart (comments, CDATA, declarations and other "<!" or "<?" nodes end
@@ -256,8 +256,8 @@ void UrdfXmlCheck::CheckSizeAndNesting(const std::string& xml) const {
       }
       if (end == n) return;  // Unterminated; TinyXML reports it with a position.
       if (xml[end - 1] != '/' && ++depth > kMaxUrdfNestingDepth) {
-        Fail("XML elements nest more than " + std::to_string(kMaxUrdfNestingDepth) +
-             " levels deep (kMaxUrdfNestingDepth) at line " + std::to_string(LineAt(xml, i)) +
+        Fail("XML elements nest more than " + cairn::FormatShort(kMaxUrdfNestingDepth) +
+             " levels deep (kMaxUrdfNestingDepth) at line " + cairn::FormatShort(LineAt(xml, i)) +
              "; a URDF nests about 5, so this is not a valid robot description");
       }
     } else {
@@ -275,8 +275,8 @@ void UrdfXmlCheck::CheckDocument(const std::string& xml) const {
   TiXmlDocument document;
   document.Parse(xml.c_str());
   if (document.Error()) {
-    Fail("malformed XML at line " + std::to_string(document.ErrorRow()) + ", column " +
-         std::to_string(document.ErrorCol()) + ": " + document.ErrorDesc());
+    Fail("malformed XML at line " + cairn::FormatShort(document.ErrorRow()) + ", column " +
+         cairn::FormatShort(document.ErrorCol()) + ": " + document.ErrorDesc());
   }
   const TiXmlElement* robot = document.FirstChildElement("robot");
   if (robot == nullptr) Fail("no <robot> element; a URDF file's root element is <robot name=...>");

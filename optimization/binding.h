@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/decision_variables.h"
 
 namespace cairn::optimization {
@@ -24,8 +25,8 @@ class Binding {
     }
     if (evaluator_->num_inputs() != variables_.size()) {
       throw std::invalid_argument("Binding '" + evaluator_->name() + "' to '" + variables_.description() +
-                                  "': the evaluator takes " + std::to_string(evaluator_->num_inputs()) +
-                                  " inputs but " + std::to_string(variables_.size()) +
+                                  "': the evaluator takes " + cairn::FormatShort(evaluator_->num_inputs()) +
+                                  " inputs but " + cairn::FormatShort(variables_.size()) +
                                   " variables were given; bind exactly one variable per input.");
     }
   }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/check_gradients.h"
 
 #include <algorithm>
@@ -110,7 +111,7 @@ namespace {
 
 void CheckTolerance(double tolerance) {
   if (!(tolerance > 0.0)) {
-    throw std::invalid_argument("CheckGradients: tolerance = " + std::to_string(tolerance) +
+    throw std::invalid_argument("CheckGradients: tolerance = " + cairn::FormatShort(tolerance) +
                                 " must be positive (1e-5 suits central differences).");
   }
 }
@@ -140,8 +141,8 @@ GradientCheckResult Summarise(std::vector<GradientCheckResult::Entry> entries, d
 GradientCheckResult CheckGradients(const MathematicalProgram& prog, const Eigen::Ref<const Eigen::VectorXd>& x,
                                    double tolerance, int max_reported) {
   if (x.size() != prog.num_vars()) {
-    throw std::invalid_argument("CheckGradients: x has size " + std::to_string(x.size()) + " but the program has " +
-                                std::to_string(prog.num_vars()) + " variables; pass one value per variable.");
+    throw std::invalid_argument("CheckGradients: x has size " + cairn::FormatShort(x.size()) + " but the program has " +
+                                cairn::FormatShort(prog.num_vars()) + " variables; pass one value per variable.");
   }
   CheckTolerance(tolerance);
   std::vector<GradientCheckResult::Entry> entries;
@@ -154,8 +155,8 @@ GradientCheckResult CheckGradients(const MathematicalProgram& prog, const Eigen:
 GradientCheckResult CheckGradients(const Evaluator& evaluator, const Eigen::Ref<const Eigen::VectorXd>& x,
                                    double tolerance, int max_reported) {
   if (x.size() != evaluator.num_inputs()) {
-    throw std::invalid_argument("CheckGradients: x has size " + std::to_string(x.size()) + " but evaluator '" +
-                                evaluator.name() + "' takes " + std::to_string(evaluator.num_inputs()) +
+    throw std::invalid_argument("CheckGradients: x has size " + cairn::FormatShort(x.size()) + " but evaluator '" +
+                                evaluator.name() + "' takes " + cairn::FormatShort(evaluator.num_inputs()) +
                                 " inputs.");
   }
   CheckTolerance(tolerance);

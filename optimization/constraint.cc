@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/constraint.h"
 
 #include <algorithm>
@@ -15,14 +16,14 @@ Constraint::Constraint(std::string name, int num_inputs, int num_outputs,
       upper_bound_(upper_bound) {
   if (lower_bound_.size() != num_outputs || upper_bound_.size() != num_outputs) {
     throw std::invalid_argument("Constraint '" + this->name() + "': lower bound has size " +
-                                std::to_string(lower_bound_.size()) + " and upper bound " +
-                                std::to_string(upper_bound_.size()) + "; both need one entry per output (" +
-                                std::to_string(num_outputs) + ").");
+                                cairn::FormatShort(lower_bound_.size()) + " and upper bound " +
+                                cairn::FormatShort(upper_bound_.size()) + "; both need one entry per output (" +
+                                cairn::FormatShort(num_outputs) + ").");
   }
   for (int i = 0; i < num_outputs; ++i) {
     if (std::isnan(lower_bound_[i]) || std::isnan(upper_bound_[i]) || lower_bound_[i] > upper_bound_[i]) {
-      throw std::invalid_argument("Constraint '" + this->name() + "': row " + std::to_string(i) + " has bounds [" +
-                                  std::to_string(lower_bound_[i]) + ", " + std::to_string(upper_bound_[i]) +
+      throw std::invalid_argument("Constraint '" + this->name() + "': row " + cairn::FormatShort(i) + " has bounds [" +
+                                  cairn::FormatShort(lower_bound_[i]) + ", " + cairn::FormatShort(upper_bound_[i]) +
                                   "]; bounds must not be NaN and need lower <= upper (use +/-infinity for a "
                                   "one-sided row).");
     }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/decision_variables.h"
 
 #include <stdexcept>
@@ -6,22 +7,22 @@ namespace cairn::optimization {
 
 int DecisionVariables::operator[](int i) const {
   if (i < 0 || i >= size()) {
-    throw std::invalid_argument("DecisionVariables '" + description_ + "': position " + std::to_string(i) +
-                                " is out of range; valid positions are 0.." + std::to_string(size() - 1) + ".");
+    throw std::invalid_argument("DecisionVariables '" + description_ + "': position " + cairn::FormatShort(i) +
+                                " is out of range; valid positions are 0.." + cairn::FormatShort(size() - 1) + ".");
   }
   return indices_[static_cast<std::size_t>(i)];
 }
 
 DecisionVariables DecisionVariables::Segment(int start, int count) const {
   if (start < 0 || count < 0 || start + count > size()) {
-    throw std::invalid_argument("DecisionVariables '" + description_ + "'.Segment(" + std::to_string(start) +
-                                ", " + std::to_string(count) + ") is out of range: the list has " +
-                                std::to_string(size()) + " variables; pass start >= 0 and start + count <= " +
-                                std::to_string(size()) + ".");
+    throw std::invalid_argument("DecisionVariables '" + description_ + "'.Segment(" + cairn::FormatShort(start) +
+                                ", " + cairn::FormatShort(count) + ") is out of range: the list has " +
+                                cairn::FormatShort(size()) + " variables; pass start >= 0 and start + count <= " +
+                                cairn::FormatShort(size()) + ".");
   }
   std::vector<int> indices(indices_.begin() + start, indices_.begin() + start + count);
   return FromIndices(program_id_, std::move(indices),
-                     description_ + "[" + std::to_string(start) + ":" + std::to_string(start + count) + "]");
+                     description_ + "[" + cairn::FormatShort(start) + ":" + cairn::FormatShort(start + count) + "]");
 }
 
 DecisionVariables DecisionVariables::Concatenate(const std::vector<DecisionVariables>& parts) {

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/evaluator.h"
 
 #include <algorithm>
@@ -31,14 +32,14 @@ void ValidatePattern(const std::string& evaluator, const char* what, const std::
   sorted.reserve(pattern.size());
   for (const SparsityEntry& e : pattern) {
     if (e.row < 0 || e.row >= rows || e.col < 0 || e.col >= cols) {
-      throw std::invalid_argument("Evaluator '" + evaluator + "': " + what + " entry (" + std::to_string(e.row) +
-                                  ", " + std::to_string(e.col) + ") is outside the " + std::to_string(rows) +
-                                  " x " + std::to_string(cols) + " matrix; declare entries with 0 <= row < " +
-                                  std::to_string(rows) + " and 0 <= col < " + std::to_string(cols) + ".");
+      throw std::invalid_argument("Evaluator '" + evaluator + "': " + what + " entry (" + cairn::FormatShort(e.row) +
+                                  ", " + cairn::FormatShort(e.col) + ") is outside the " + cairn::FormatShort(rows) +
+                                  " x " + cairn::FormatShort(cols) + " matrix; declare entries with 0 <= row < " +
+                                  cairn::FormatShort(rows) + " and 0 <= col < " + cairn::FormatShort(cols) + ".");
     }
     if (lower_triangle && e.row < e.col) {
-      throw std::invalid_argument("Evaluator '" + evaluator + "': " + what + " entry (" + std::to_string(e.row) +
-                                  ", " + std::to_string(e.col) +
+      throw std::invalid_argument("Evaluator '" + evaluator + "': " + what + " entry (" + cairn::FormatShort(e.row) +
+                                  ", " + cairn::FormatShort(e.col) +
                                   ") is above the diagonal; declare the lower triangle only (row >= col).");
     }
     sorted.emplace_back(e.row, e.col);
@@ -46,8 +47,8 @@ void ValidatePattern(const std::string& evaluator, const char* what, const std::
   std::sort(sorted.begin(), sorted.end());
   const auto dup = std::adjacent_find(sorted.begin(), sorted.end());
   if (dup != sorted.end()) {
-    throw std::invalid_argument("Evaluator '" + evaluator + "': " + what + " entry (" + std::to_string(dup->first) +
-                                ", " + std::to_string(dup->second) + ") is declared twice; list each entry once.");
+    throw std::invalid_argument("Evaluator '" + evaluator + "': " + what + " entry (" + cairn::FormatShort(dup->first) +
+                                ", " + cairn::FormatShort(dup->second) + ") is declared twice; list each entry once.");
   }
 }
 
@@ -93,8 +94,8 @@ Evaluator::Evaluator(std::string name, int num_inputs, int num_outputs, std::vec
       jacobian_pattern_(std::move(jacobian_pattern)),
       jacobian_source_(jacobian_source) {
   if (num_inputs < 0 || num_outputs < 0) {
-    throw std::invalid_argument("Evaluator '" + name_ + "': num_inputs = " + std::to_string(num_inputs) +
-                                " and num_outputs = " + std::to_string(num_outputs) + " must be >= 0.");
+    throw std::invalid_argument("Evaluator '" + name_ + "': num_inputs = " + cairn::FormatShort(num_inputs) +
+                                " and num_outputs = " + cairn::FormatShort(num_outputs) + " must be >= 0.");
   }
   ValidatePattern(name_, "Jacobian pattern", jacobian_pattern_, num_outputs, num_inputs, false);
   std::vector<int> order(jacobian_pattern_.size());
@@ -122,16 +123,16 @@ void Evaluator::DeclareHessianPattern(std::vector<SparsityEntry> hessian_pattern
 
 void Evaluator::CheckInputSize(const Eigen::Ref<const Eigen::VectorXd>& x, const char* method) const {
   if (x.size() != num_inputs_) {
-    throw std::invalid_argument("Evaluator '" + name_ + "'." + method + ": x has size " + std::to_string(x.size()) +
-                                " but the evaluator takes " + std::to_string(num_inputs_) + " inputs.");
+    throw std::invalid_argument("Evaluator '" + name_ + "'." + method + ": x has size " + cairn::FormatShort(x.size()) +
+                                " but the evaluator takes " + cairn::FormatShort(num_inputs_) + " inputs.");
   }
 }
 
 void Evaluator::Eval(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const {
   CheckInputSize(x, "Eval");
   if (y.size() != num_outputs_) {
-    throw std::invalid_argument("Evaluator '" + name_ + "'.Eval: y has size " + std::to_string(y.size()) +
-                                " but the evaluator has " + std::to_string(num_outputs_) + " outputs.");
+    throw std::invalid_argument("Evaluator '" + name_ + "'.Eval: y has size " + cairn::FormatShort(y.size()) +
+                                " but the evaluator has " + cairn::FormatShort(num_outputs_) + " outputs.");
   }
   DoEval(x, y);
 }
@@ -147,9 +148,9 @@ void Evaluator::EvalWithJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eig
   CheckInputSize(x, "EvalWithJacobian");
   if (y.size() != num_outputs_ || jacobian_values.size() != jacobian_nonzeros()) {
     throw std::invalid_argument("Evaluator '" + name_ + "'.EvalWithJacobian: y has size " +
-                                std::to_string(y.size()) + " and jacobian_values " +
-                                std::to_string(jacobian_values.size()) + "; expected " +
-                                std::to_string(num_outputs_) + " and " + std::to_string(jacobian_nonzeros()) +
+                                cairn::FormatShort(y.size()) + " and jacobian_values " +
+                                cairn::FormatShort(jacobian_values.size()) + "; expected " +
+                                cairn::FormatShort(num_outputs_) + " and " + cairn::FormatShort(jacobian_nonzeros()) +
                                 " (one per pattern entry).");
   }
   DoEvalWithJacobian(x, y, jacobian_values);
@@ -179,9 +180,9 @@ void Evaluator::EvalHessian(const Eigen::Ref<const Eigen::VectorXd>& x,
   CheckInputSize(x, "EvalHessian");
   if (weights.size() != num_outputs_ || hessian_values.size() != static_cast<Eigen::Index>(hessian_pattern_.size())) {
     throw std::invalid_argument("Evaluator '" + name_ + "'.EvalHessian: weights has size " +
-                                std::to_string(weights.size()) + " and hessian_values " +
-                                std::to_string(hessian_values.size()) + "; expected " +
-                                std::to_string(num_outputs_) + " and " + std::to_string(hessian_pattern_.size()) +
+                                cairn::FormatShort(weights.size()) + " and hessian_values " +
+                                cairn::FormatShort(hessian_values.size()) + "; expected " +
+                                cairn::FormatShort(num_outputs_) + " and " + cairn::FormatShort(hessian_pattern_.size()) +
                                 ".");
   }
   DoEvalHessian(x, weights, hessian_values);

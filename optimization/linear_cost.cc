@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/linear_cost.h"
 
 #include <cmath>
@@ -12,7 +13,7 @@ LinearCost::LinearCost(const Eigen::Ref<const Eigen::VectorXd>& a, double b)
       b_(b) {
   if (!a_.allFinite() || !std::isfinite(b)) {
     throw std::invalid_argument("LinearCost: the coefficients a and the constant b must be finite; got b = " +
-                                std::to_string(b) + " and a with a non-finite entry if b is finite.");
+                                cairn::FormatShort(b) + " and a with a non-finite entry if b is finite.");
   }
   DeclareHessianPattern({});
 }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/mathematical_program.h"
 
 #include <algorithm>
@@ -23,11 +24,11 @@ MathematicalProgram::MathematicalProgram() : id_(NextProgramId()) {}
 
 DecisionVariables MathematicalProgram::NewContinuousVariables(int n, const std::string& name) {
   if (n < 1) {
-    throw std::invalid_argument("NewContinuousVariables(" + std::to_string(n) + ", '" + name +
+    throw std::invalid_argument("NewContinuousVariables(" + cairn::FormatShort(n) + ", '" + name +
                                 "'): the number of variables must be at least 1.");
   }
   if (name.empty()) {
-    throw std::invalid_argument("NewContinuousVariables(" + std::to_string(n) +
+    throw std::invalid_argument("NewContinuousVariables(" + cairn::FormatShort(n) +
                                 ", ''): give the variables a name; it appears in every message about them.");
   }
   for (const DecisionVariables& block : blocks_) {
@@ -40,7 +41,7 @@ DecisionVariables MathematicalProgram::NewContinuousVariables(int n, const std::
   std::vector<int> indices(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     indices[static_cast<std::size_t>(i)] = start + i;
-    variable_names_.push_back(n == 1 ? name : name + "(" + std::to_string(i) + ")");
+    variable_names_.push_back(n == 1 ? name : name + "(" + cairn::FormatShort(i) + ")");
   }
   initial_guess_.conservativeResize(start + n);
   initial_guess_.tail(n).setZero();
@@ -50,9 +51,9 @@ DecisionVariables MathematicalProgram::NewContinuousVariables(int n, const std::
 
 const std::string& MathematicalProgram::VariableName(int index) const {
   if (index < 0 || index >= num_vars()) {
-    throw std::invalid_argument("VariableName(" + std::to_string(index) + "): the program has " +
-                                std::to_string(num_vars()) + " variables; pass 0 <= index < " +
-                                std::to_string(num_vars()) + ".");
+    throw std::invalid_argument("VariableName(" + cairn::FormatShort(index) + "): the program has " +
+                                cairn::FormatShort(num_vars()) + " variables; pass 0 <= index < " +
+                                cairn::FormatShort(num_vars()) + ".");
   }
   return variable_names_[static_cast<std::size_t>(index)];
 }
@@ -90,8 +91,8 @@ void MathematicalProgram::CheckVariables(const DecisionVariables& vars, const st
 void MathematicalProgram::CheckDecisionVectorSize(const Eigen::Ref<const Eigen::VectorXd>& x,
                                                   const char* method) const {
   if (x.size() != num_vars()) {
-    throw std::invalid_argument(std::string(method) + ": x has size " + std::to_string(x.size()) +
-                                " but the program has " + std::to_string(num_vars()) + " variables.");
+    throw std::invalid_argument(std::string(method) + ": x has size " + cairn::FormatShort(x.size()) +
+                                " but the program has " + cairn::FormatShort(num_vars()) + " variables.");
   }
 }
 
@@ -100,7 +101,7 @@ void MathematicalProgram::SetInitialGuess(const DecisionVariables& vars,
   CheckVariables(vars, "SetInitialGuess");
   if (values.size() != vars.size()) {
     throw std::invalid_argument("SetInitialGuess('" + vars.description() + "'): got " +
-                                std::to_string(values.size()) + " values for " + std::to_string(vars.size()) +
+                                cairn::FormatShort(values.size()) + " values for " + cairn::FormatShort(vars.size()) +
                                 " variables; pass one value per variable.");
   }
   for (int i = 0; i < vars.size(); ++i) initial_guess_[vars.indices()[static_cast<std::size_t>(i)]] = values[i];
@@ -111,7 +112,7 @@ Binding<Evaluator> MathematicalProgram::AddCost(std::shared_ptr<Evaluator> cost,
   Binding<Evaluator> binding(std::move(cost), vars);
   if (binding.evaluator()->num_outputs() != 1) {
     throw std::invalid_argument("AddCost('" + binding.evaluator()->name() + "'): a cost must have exactly one "
-                                "output but it has " + std::to_string(binding.evaluator()->num_outputs()) +
+                                "output but it has " + cairn::FormatShort(binding.evaluator()->num_outputs()) +
                                 "; for a vector residual use AddLeastSquaresCost.");
   }
   costs_.push_back(binding);

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/quadratic_cost.h"
 
 #include <cmath>
@@ -9,8 +10,8 @@ namespace {
 
 int CheckedSize(const Eigen::SparseMatrix<double>& Q, const Eigen::Ref<const Eigen::VectorXd>& b) {
   if (Q.rows() != Q.cols() || Q.rows() != b.size()) {
-    throw std::invalid_argument("QuadraticCost: Q is " + std::to_string(Q.rows()) + " x " + std::to_string(Q.cols()) +
-                                " and b has size " + std::to_string(b.size()) +
+    throw std::invalid_argument("QuadraticCost: Q is " + cairn::FormatShort(Q.rows()) + " x " + cairn::FormatShort(Q.cols()) +
+                                " and b has size " + cairn::FormatShort(b.size()) +
                                 "; Q must be square with as many rows as b has entries.");
   }
   return static_cast<int>(b.size());
@@ -29,11 +30,11 @@ QuadraticCost::QuadraticCost(const Eigen::SparseMatrix<double>& Q, const Eigen::
   const Eigen::SparseMatrix<double> transpose = Q_.transpose();
   const double asymmetry = (Q_ - transpose).cwiseAbs().sum();
   if (!std::isfinite(asymmetry) || asymmetry > 1e-12 * (1.0 + Q_.cwiseAbs().sum())) {
-    throw std::invalid_argument("QuadraticCost: Q is not symmetric (sum |Q - Q'| = " + std::to_string(asymmetry) +
+    throw std::invalid_argument("QuadraticCost: Q is not symmetric (sum |Q - Q'| = " + cairn::FormatShort(asymmetry) +
                                 ") or has non-finite entries; pass (Q + Q')/2 for the same cost.");
   }
   if (!b_.allFinite() || !std::isfinite(c)) {
-    throw std::invalid_argument("QuadraticCost: b and c must be finite; got c = " + std::to_string(c) + ".");
+    throw std::invalid_argument("QuadraticCost: b and c must be finite; got c = " + cairn::FormatShort(c) + ".");
   }
   std::vector<SparsityEntry> pattern;
   std::vector<double> values;

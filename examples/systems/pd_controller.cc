@@ -4,13 +4,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "cairn/common/number_text.h"
+
 namespace cairn::examples {
 
 PdController::PdController(double kp, double kd, double theta_desired) {
   if (!(kp >= 0.0) || !(kd >= 0.0) || !std::isfinite(theta_desired)) {
     throw std::invalid_argument("PdController: need kp >= 0, kd >= 0 and a finite target; got kp " +
-                                std::to_string(kp) + ", kd " + std::to_string(kd) + ", target " +
-                                std::to_string(theta_desired) + ".");
+                                cairn::FormatShort(kp) + ", kd " + cairn::FormatShort(kd) + ", target " +
+                                cairn::FormatShort(theta_desired) + ".");
   }
   const auto& state = DeclareVectorInputPort("state", 2);
   const int gains = DeclareNumericParameter(Eigen::Vector3d(kp, kd, theta_desired));

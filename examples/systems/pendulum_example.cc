@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "cairn/common/number_text.h"
 #include "cairn/systems/analysis/explicit_euler_integrator.h"
 #include "cairn/systems/analysis/runge_kutta45_integrator.h"
 #include "cairn/systems/analysis/runge_kutta4_integrator.h"
@@ -49,7 +50,7 @@ double PredictEquilibrium(const PendulumExampleOptions& o) {
 
 PendulumRun RunPendulumExample(const PendulumExampleOptions& options, const std::string& csv_path) {
   if (!(options.duration > 0.0) || !std::isfinite(options.duration)) {
-    throw std::invalid_argument("The duration must be finite and > 0 s; got " + std::to_string(options.duration) + ".");
+    throw std::invalid_argument("The duration must be finite and > 0 s; got " + cairn::FormatShort(options.duration) + ".");
   }
   auto diagram = BuildPendulumDiagram(options);
   const auto& plant = static_cast<const PendulumPlant&>(diagram->GetSubsystemByName("plant"));

@@ -4,13 +4,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "cairn/common/number_text.h"
+
 namespace cairn::examples {
 
 PendulumPlant::PendulumPlant(const PendulumParameters& p) {
   if (!(p.mass > 0.0) || !(p.length > 0.0) || !(p.damping >= 0.0) || !(p.gravity >= 0.0)) {
     throw std::invalid_argument("PendulumPlant: need mass > 0, length > 0, damping >= 0 and gravity >= 0; got mass " +
-                                std::to_string(p.mass) + ", length " + std::to_string(p.length) + ", damping " +
-                                std::to_string(p.damping) + ", gravity " + std::to_string(p.gravity) + ".");
+                                cairn::FormatShort(p.mass) + ", length " + cairn::FormatShort(p.length) + ", damping " +
+                                cairn::FormatShort(p.damping) + ", gravity " + cairn::FormatShort(p.gravity) + ".");
   }
   DeclareVectorInputPort("torque", 1);
   DeclareContinuousState(Eigen::Vector2d::Zero());

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/solvers/ipopt_solver.h"
 
 #include <algorithm>
@@ -146,7 +147,7 @@ void ApplyOption(Ipopt::IpoptApplication* app, const std::string& name, const So
     const std::vector<std::string> closest = ClosestNames(name, names);
     throw std::invalid_argument("IpoptSolver: unknown Ipopt option '" + name + "'" +
                                 (closest.empty() ? "" : "; did you mean " + QuotedList(closest) + "?") +
-                                " (see Ipopt's option reference for all " + std::to_string(names.size()) +
+                                " (see Ipopt's option reference for all " + cairn::FormatShort(names.size()) +
                                 " names).");
   }
   // Values are checked against the registered option first: Ipopt's own setters print to stdout on failure.

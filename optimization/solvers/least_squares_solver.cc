@@ -43,7 +43,7 @@ int Integer(const std::string& name, const SolverOptions::Value& value) {
 
 int AtLeastOne(const std::string& name, int value) {
   if (value < 1) {
-    throw std::invalid_argument("LeastSquaresSolver: option '" + name + "' = " + std::to_string(value) +
+    throw std::invalid_argument("LeastSquaresSolver: option '" + name + "' = " + cairn::FormatShort(value) +
                                 " must be >= 1.");
   }
   return value;
@@ -389,12 +389,12 @@ SolverResult LeastSquaresSolver::DoSolve(const MathematicalProgram& prog, const 
       result.status = violation <= settings.constraint_tol ? SolutionStatus::kSolved : SolutionStatus::kInfeasible;
       result.message = violation <= settings.constraint_tol
                            ? "converged"
-                           : "converged, but the linear equalities are violated by " + std::to_string(violation) +
-                                 " after " + std::to_string(outer) + " multiplier updates";
+                           : "converged, but the linear equalities are violated by " + cairn::FormatShort(violation) +
+                                 " after " + cairn::FormatShort(outer) + " multiplier updates";
       break;
     case InnerStatus::kIterationLimit:
       result.status = SolutionStatus::kIterationLimit;
-      result.message = "reached max_iterations = " + std::to_string(settings.max_iterations);
+      result.message = "reached max_iterations = " + cairn::FormatShort(settings.max_iterations);
       break;
     case InnerStatus::kNumericalFailure:
       result.status = SolutionStatus::kNumericalFailure;

@@ -234,8 +234,8 @@ int AsInteger(const std::string& option, const SolverOptions::Value& value) {
 // seed wrapped to a huge unsigned, a negative tolerance as none) is an error rather than a surprise.
 int AtLeast(const std::string& option, int value, int lowest, const char* why) {
   if (value < lowest) {
-    throw std::invalid_argument("NloptSolver: option '" + option + "' = " + std::to_string(value) + " must be >= " +
-                                std::to_string(lowest) + " (" + why + ").");
+    throw std::invalid_argument("NloptSolver: option '" + option + "' = " + cairn::FormatShort(value) + " must be >= " +
+                                cairn::FormatShort(lowest) + " (" + why + ").");
   }
   return value;
 }
@@ -396,8 +396,8 @@ std::string NloptSolver::DoCheckSupport(const MathematicalProgram& prog) const {
       for (int i = 0; i < prog.num_vars(); ++i) {
         if (!std::isfinite(lower[i]) || !std::isfinite(upper[i])) {
           return "NloptSolver: the global algorithm " + stage + " needs finite bounds on every variable, but '" +
-                 prog.VariableName(i) + "' has bounds [" + std::to_string(lower[i]) + ", " +
-                 std::to_string(upper[i]) + "]; add them with AddBoundingBoxConstraint.";
+                 prog.VariableName(i) + "' has bounds [" + cairn::FormatShort(lower[i]) + ", " +
+                 cairn::FormatShort(upper[i]) + "]; add them with AddBoundingBoxConstraint.";
         }
       }
     }

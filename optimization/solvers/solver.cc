@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/solvers/solver.h"
 
 #include <algorithm>
@@ -33,13 +34,13 @@ SolverResult Solver::Solve(const MathematicalProgram& prog, const Eigen::Ref<con
   if (!why_not.empty()) throw std::invalid_argument(why_not);
   if (initial_guess.size() != prog.num_vars()) {
     throw std::invalid_argument("Solver '" + name_ + "': the initial guess has " +
-                                std::to_string(initial_guess.size()) + " entries but the program has " +
-                                std::to_string(prog.num_vars()) + " variables; pass one value per variable.");
+                                cairn::FormatShort(initial_guess.size()) + " entries but the program has " +
+                                cairn::FormatShort(prog.num_vars()) + " variables; pass one value per variable.");
   }
   for (int i = 0; i < initial_guess.size(); ++i) {
     if (!std::isfinite(initial_guess[i])) {
       throw std::invalid_argument("Solver '" + name_ + "': the initial guess of variable '" + prog.VariableName(i) +
-                                  "' is " + std::to_string(initial_guess[i]) + "; pass a finite value.");
+                                  "' is " + cairn::FormatShort(initial_guess[i]) + "; pass a finite value.");
     }
   }
   for (const std::string& key : options.solver_keys()) {

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/evaluation/material_segmentation_score.h"
 
 #include <algorithm>
@@ -11,10 +12,10 @@ MaterialSegmentationScore::MaterialSegmentationScore(int num_labels, int num_bin
     : num_labels_(num_labels), num_bins_(num_bins) {
   if (num_labels < 1) {
     throw std::invalid_argument("MaterialSegmentationScore: num_labels must be >= 1; got " +
-                                std::to_string(num_labels) + ".");
+                                cairn::FormatShort(num_labels) + ".");
   }
   if (num_bins < 1) {
-    throw std::invalid_argument("MaterialSegmentationScore: num_bins must be >= 1; got " + std::to_string(num_bins) +
+    throw std::invalid_argument("MaterialSegmentationScore: num_bins must be >= 1; got " + cairn::FormatShort(num_bins) +
                                 ". Use 10.");
   }
   confusion_.setZero(num_labels, num_labels);
@@ -26,14 +27,14 @@ MaterialSegmentationScore::MaterialSegmentationScore(int num_labels, int num_bin
 void MaterialSegmentationScore::Add(const cv::Mat& probabilities, const cv::Mat& truth, std::uint8_t ignore) {
   if (probabilities.type() != CV_32FC(num_labels_)) {
     throw std::invalid_argument("MaterialSegmentationScore: probabilities must be CV_32FC(" +
-                                std::to_string(num_labels_) + "); got " + std::to_string(probabilities.channels()) +
-                                " channel(s) of depth " + std::to_string(probabilities.depth()) + ".");
+                                cairn::FormatShort(num_labels_) + "); got " + cairn::FormatShort(probabilities.channels()) +
+                                " channel(s) of depth " + cairn::FormatShort(probabilities.depth()) + ".");
   }
   if (truth.type() != CV_8UC1 || truth.size() != probabilities.size()) {
     throw std::invalid_argument("MaterialSegmentationScore: the truth must be CV_8UC1 of the probabilities' size " +
-                                std::to_string(probabilities.cols) + "x" + std::to_string(probabilities.rows) +
-                                "; got " + std::to_string(truth.cols) + "x" + std::to_string(truth.rows) +
-                                " of type " + std::to_string(truth.type()) + ".");
+                                cairn::FormatShort(probabilities.cols) + "x" + cairn::FormatShort(probabilities.rows) +
+                                "; got " + cairn::FormatShort(truth.cols) + "x" + cairn::FormatShort(truth.rows) +
+                                " of type " + cairn::FormatShort(truth.type()) + ".");
   }
   const int n = num_labels_;
   for (int r = 0; r < truth.rows; ++r) {
@@ -42,10 +43,10 @@ void MaterialSegmentationScore::Add(const cv::Mat& probabilities, const cv::Mat&
     for (int c = 0; c < truth.cols; ++c) {
       if (t[c] == ignore) continue;
       if (t[c] >= n) {
-        throw std::invalid_argument("MaterialSegmentationScore: truth pixel (" + std::to_string(r) + ", " +
-                                    std::to_string(c) + ") holds " + std::to_string(t[c]) + ", not a label index " +
-                                    "below " + std::to_string(n) + " nor the ignore value " +
-                                    std::to_string(ignore) + ".");
+        throw std::invalid_argument("MaterialSegmentationScore: truth pixel (" + cairn::FormatShort(r) + ", " +
+                                    cairn::FormatShort(c) + ") holds " + cairn::FormatShort(t[c]) + ", not a label index " +
+                                    "below " + cairn::FormatShort(n) + " nor the ignore value " +
+                                    cairn::FormatShort(ignore) + ".");
       }
       const float* q = p + c * n;
       const int predicted = static_cast<int>(std::max_element(q, q + n) - q);

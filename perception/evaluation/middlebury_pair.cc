@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/evaluation/middlebury_pair.h"
 
 #include <cmath>
@@ -27,7 +28,7 @@ cv::Mat LoadGrayImage(const std::string& path) { return Read(path, cv::IMREAD_GR
 
 cv::Mat LoadDisparityImage(const std::string& path, double scale) {
   if (!(scale > 0.0)) {
-    throw std::invalid_argument("ground-truth scale " + std::to_string(scale) +
+    throw std::invalid_argument("ground-truth scale " + cairn::FormatShort(scale) +
                                 " must be positive (Middlebury 2001: 8, tsukuba 16)");
   }
   const cv::Mat raw = Read(path, cv::IMREAD_GRAYSCALE);
@@ -40,9 +41,9 @@ cv::Mat OcclusionFromGroundTruth(const cv::Mat& left_disparity, const cv::Mat& r
   if (left_disparity.type() != CV_32FC1 || right_disparity.type() != CV_32FC1 ||
       left_disparity.size() != right_disparity.size()) {
     throw std::invalid_argument("OcclusionFromGroundTruth: both ground truths must be CV_32FC1 of one size, got " +
-                                std::to_string(left_disparity.cols) + "x" + std::to_string(left_disparity.rows) +
-                                " and " + std::to_string(right_disparity.cols) + "x" +
-                                std::to_string(right_disparity.rows));
+                                cairn::FormatShort(left_disparity.cols) + "x" + cairn::FormatShort(left_disparity.rows) +
+                                " and " + cairn::FormatShort(right_disparity.cols) + "x" +
+                                cairn::FormatShort(right_disparity.rows));
   }
   cv::Mat occluded(left_disparity.size(), CV_8UC1, cv::Scalar(0));
   for (int y = 0; y < left_disparity.rows; ++y) {

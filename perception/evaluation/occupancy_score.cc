@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/evaluation/occupancy_score.h"
 
 #include <stdexcept>
@@ -7,12 +8,12 @@ namespace cairn::perception {
 
 OccupancyScore ScoreOccupancy(const OccupancyGrid& grid, const std::vector<uint8_t>& truth, double threshold) {
   if (truth.size() != grid.num_cells()) {
-    throw std::invalid_argument("ScoreOccupancy: the ground truth has " + std::to_string(truth.size()) +
-                                " cells but the grid has " + std::to_string(grid.num_cells()) +
+    throw std::invalid_argument("ScoreOccupancy: the ground truth has " + cairn::FormatShort(truth.size()) +
+                                " cells but the grid has " + cairn::FormatShort(grid.num_cells()) +
                                 "; rasterise the truth on the same grid (RasterizeScene)");
   }
   if (!(threshold > 0.0 && threshold < 1.0)) {
-    throw std::invalid_argument("ScoreOccupancy: threshold " + std::to_string(threshold) + " must be in (0, 1)");
+    throw std::invalid_argument("ScoreOccupancy: threshold " + cairn::FormatShort(threshold) + " must be in (0, 1)");
   }
   OccupancyScore score;
   for (std::size_t i = 0; i < truth.size(); ++i) {

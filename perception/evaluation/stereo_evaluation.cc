@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/evaluation/stereo_evaluation.h"
 
 #include <algorithm>
@@ -10,8 +11,8 @@ namespace cairn::perception {
 
 double RocAuc(const std::vector<float>& confidence, const std::vector<uint8_t>& is_error) {
   if (confidence.size() != is_error.size() || confidence.empty()) {
-    throw std::invalid_argument("RocAuc: got " + std::to_string(confidence.size()) + " confidences and " +
-                                std::to_string(is_error.size()) + " error flags; pass one flag per pixel, at least one");
+    throw std::invalid_argument("RocAuc: got " + cairn::FormatShort(confidence.size()) + " confidences and " +
+                                cairn::FormatShort(is_error.size()) + " error flags; pass one flag per pixel, at least one");
   }
   std::vector<std::size_t> order(confidence.size());
   std::iota(order.begin(), order.end(), 0);
@@ -42,7 +43,7 @@ double RocAuc(const std::vector<float>& confidence, const std::vector<uint8_t>& 
 
 double OptimalAuc(double error_rate) {
   if (!(error_rate >= 0.0 && error_rate <= 1.0)) {
-    throw std::invalid_argument("OptimalAuc: error rate " + std::to_string(error_rate) + " is outside [0, 1]");
+    throw std::invalid_argument("OptimalAuc: error rate " + cairn::FormatShort(error_rate) + " is outside [0, 1]");
   }
   if (error_rate >= 1.0) return 1.0;
   return error_rate + (1.0 - error_rate) * std::log1p(-error_rate);
@@ -53,9 +54,9 @@ StereoEvaluation EvaluateStereo(const DisparityVolume& confidence, const WtaResu
   const int height = confidence.height();
   const int width = confidence.width();
   if (ground_truth.type() != CV_32FC1 || ground_truth.rows != height || ground_truth.cols != width) {
-    throw std::invalid_argument("EvaluateStereo: the ground truth is " + std::to_string(ground_truth.cols) + "x" +
-                                std::to_string(ground_truth.rows) + " (type " + std::to_string(ground_truth.type()) +
-                                ") but the images are " + std::to_string(width) + "x" + std::to_string(height) +
+    throw std::invalid_argument("EvaluateStereo: the ground truth is " + cairn::FormatShort(ground_truth.cols) + "x" +
+                                cairn::FormatShort(ground_truth.rows) + " (type " + cairn::FormatShort(ground_truth.type()) +
+                                ") but the images are " + cairn::FormatShort(width) + "x" + cairn::FormatShort(height) +
                                 "; pass the left view's ground truth as CV_32FC1 (LoadDisparityImage)");
   }
   if (wta.disparity.rows != height || wta.disparity.cols != width) {

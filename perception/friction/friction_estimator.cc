@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/friction/friction_estimator.h"
 
 #include <algorithm>
@@ -74,7 +75,7 @@ FrictionEstimator::FrictionEstimator(MaterialRegistry registry, std::shared_ptr<
 void FrictionEstimator::SetEta(Context* context, double eta) const {
   ValidateContext(*context);
   if (!(eta > 0.0 && eta < 1.0)) {
-    throw std::invalid_argument("eta must be in (0, 1); got " + std::to_string(eta) + ".");
+    throw std::invalid_argument("eta must be in (0, 1); got " + cairn::FormatShort(eta) + ".");
   }
   context->get_mutable_numeric_parameter(eta_parameter())[0] = eta;
 }
@@ -107,9 +108,9 @@ void FrictionEstimator::CalcPoints(const Context& context, FrictionPointCloud* c
   const auto& X_WC = GetInputPort("X_WC").Eval<Eigen::Isometry3d>(context);
   if (depth.type() != CV_32F || depth.rows != quantiles.rows || depth.cols != quantiles.cols) {
     throw std::invalid_argument("FrictionEstimator: the depth image must be CV_32F (metres) of the image's size " +
-                                std::to_string(quantiles.cols) + "x" + std::to_string(quantiles.rows) + "; got " +
-                                std::to_string(depth.cols) + "x" + std::to_string(depth.rows) + " of type " +
-                                std::to_string(depth.type()) + ".");
+                                cairn::FormatShort(quantiles.cols) + "x" + cairn::FormatShort(quantiles.rows) + "; got " +
+                                cairn::FormatShort(depth.cols) + "x" + cairn::FormatShort(depth.rows) + " of type " +
+                                cairn::FormatShort(depth.type()) + ".");
   }
   const StereoCalibration& camera = options_.camera;
   cloud->points_W.clear();

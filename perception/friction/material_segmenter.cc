@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/friction/material_segmenter.h"
 
 #include <cmath>
@@ -25,18 +26,18 @@ cv::Mat MaterialSegmenter::Segment(const cv::Mat& image) const {
   if (image.empty()) throw std::invalid_argument("Material segmentation: the image is empty.");
   if (image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
     throw std::invalid_argument("Material segmentation needs an 8-bit image with 1 or 3 channels; got depth " +
-                                std::to_string(image.depth()) + " (CV_8U is 0) with " +
-                                std::to_string(image.channels()) + " channel(s). Convert it with cv::Mat::convertTo "
+                                cairn::FormatShort(image.depth()) + " (CV_8U is 0) with " +
+                                cairn::FormatShort(image.channels()) + " channel(s). Convert it with cv::Mat::convertTo "
                                 "or cv::cvtColor.");
   }
   cv::Mat probabilities = DoSegment(image);
   if (probabilities.rows != image.rows || probabilities.cols != image.cols ||
       probabilities.type() != CV_32FC(num_labels())) {
-    throw std::logic_error("The material segmenter returned a " + std::to_string(probabilities.rows) + "x" +
-                           std::to_string(probabilities.cols) + " image with " +
-                           std::to_string(probabilities.channels()) + " channel(s); expected " +
-                           std::to_string(image.rows) + "x" + std::to_string(image.cols) + " float with " +
-                           std::to_string(num_labels()) + ".");
+    throw std::logic_error("The material segmenter returned a " + cairn::FormatShort(probabilities.rows) + "x" +
+                           cairn::FormatShort(probabilities.cols) + " image with " +
+                           cairn::FormatShort(probabilities.channels()) + " channel(s); expected " +
+                           cairn::FormatShort(image.rows) + "x" + cairn::FormatShort(image.cols) + " float with " +
+                           cairn::FormatShort(num_labels()) + ".");
   }
   const int n = num_labels();
   for (int r = 0; r < probabilities.rows; ++r) {
@@ -45,8 +46,8 @@ cv::Mat MaterialSegmenter::Segment(const cv::Mat& image) const {
       double sum = 0.0;
       for (int i = 0; i < n; ++i) sum += row[c * n + i];
       if (!(std::abs(sum - 1.0) < 1e-3)) {
-        throw std::logic_error("The material segmenter's probabilities at pixel (" + std::to_string(r) + ", " +
-                               std::to_string(c) + ") sum to " + std::to_string(sum) + ", not 1.");
+        throw std::logic_error("The material segmenter's probabilities at pixel (" + cairn::FormatShort(r) + ", " +
+                               cairn::FormatShort(c) + ") sum to " + cairn::FormatShort(sum) + ", not 1.");
       }
     }
   }

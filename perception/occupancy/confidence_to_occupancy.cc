@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/occupancy/confidence_to_occupancy.h"
 
 #include <cmath>
@@ -12,7 +13,7 @@ ConfidenceToOccupancy::ConfidenceToOccupancy(const OccupancyGrid& prototype, con
                                              double period, const CostCurveSensorModel::Options& sensor_options)
     : calibration_(calibration), period_(period), model_(sensor_options) {
   if (!(period > 0.0) || !std::isfinite(period)) {
-    throw std::invalid_argument("ConfidenceToOccupancy: period " + std::to_string(period) +
+    throw std::invalid_argument("ConfidenceToOccupancy: period " + cairn::FormatShort(period) +
                                 " s must be positive and finite (the camera's frame period, e.g. 0.1)");
   }
   calibration.Validate();

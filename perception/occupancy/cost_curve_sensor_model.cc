@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
 
 #include <stdexcept>
@@ -13,8 +14,8 @@ CostCurveSensorModel::CostCurveSensorModel() : CostCurveSensorModel(Options{}) {
 CostCurveSensorModel::CostCurveSensorModel(const Options& options) : options_(options) {
   if (!(options.min_probability > 0.0 && options.min_probability < 0.5 && options.max_probability > 0.5 &&
         options.max_probability < 1.0)) {
-    throw std::invalid_argument("sensor-model probability limits [" + std::to_string(options.min_probability) +
-                                ", " + std::to_string(options.max_probability) +
+    throw std::invalid_argument("sensor-model probability limits [" + cairn::FormatShort(options.min_probability) +
+                                ", " + cairn::FormatShort(options.max_probability) +
                                 "] must satisfy 0 < min < 0.5 < max < 1, e.g. [0.12, 0.97]");
   }
 }
@@ -27,7 +28,7 @@ void CostCurveSensorModel::Integrate(const DisparityVolume& confidence, const St
     throw std::invalid_argument("CostCurveSensorModel: the confidence volume is empty; run ComputeConfidence() first");
   }
   if (confidence.min_disparity() < 1) {
-    throw std::invalid_argument("CostCurveSensorModel: min disparity " + std::to_string(confidence.min_disparity()) +
+    throw std::invalid_argument("CostCurveSensorModel: min disparity " + cairn::FormatShort(confidence.min_disparity()) +
                                 " puts the ray's far end at infinity; match from disparity 1 or more");
   }
   const int num_disp = confidence.num_disparities();

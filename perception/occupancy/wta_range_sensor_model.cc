@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/occupancy/wta_range_sensor_model.h"
 
 #include <algorithm>
@@ -12,11 +13,11 @@ namespace cairn::perception {
 
 WtaRangeSensorModel::WtaRangeSensorModel(const Options& options) : options_(options) {
   if (!(options.sigma_disparity > 0.0)) {
-    throw std::invalid_argument("WtaRangeSensorModel: sigma_disparity " + std::to_string(options.sigma_disparity) +
+    throw std::invalid_argument("WtaRangeSensorModel: sigma_disparity " + cairn::FormatShort(options.sigma_disparity) +
                                 " must be positive (about 1 px is typical)");
   }
   if (!(options.min_peak_ratio >= 0.0)) {
-    throw std::invalid_argument("WtaRangeSensorModel: min_peak_ratio " + std::to_string(options.min_peak_ratio) +
+    throw std::invalid_argument("WtaRangeSensorModel: min_peak_ratio " + cairn::FormatShort(options.min_peak_ratio) +
                                 " must be >= 0 (0 disables peak-ratio filtering; 1.4-1.6 are common)");
   }
   if (!(options.min_probability > 0.0 && options.min_probability < 0.5 && options.max_probability > 0.5 &&
@@ -34,13 +35,13 @@ void WtaRangeSensorModel::Integrate(const WtaResult& wta, int min_disparity, int
     throw std::invalid_argument("WtaRangeSensorModel: the WTA result is empty; run ComputeWinnerTakeAll() first");
   }
   if (min_disparity < 1 || max_disparity < min_disparity) {
-    throw std::invalid_argument("WtaRangeSensorModel: disparity range [" + std::to_string(min_disparity) + ", " +
-                                std::to_string(max_disparity) + "] must start at 1 or more and not be inverted");
+    throw std::invalid_argument("WtaRangeSensorModel: disparity range [" + cairn::FormatShort(min_disparity) + ", " +
+                                cairn::FormatShort(max_disparity) + "] must start at 1 or more and not be inverted");
   }
   // The range sizes per-row scratch of the update; a disparity as wide as the image has no match anyway.
   if (max_disparity >= wta.disparity.cols) {
-    throw std::invalid_argument("WtaRangeSensorModel: max disparity " + std::to_string(max_disparity) +
-                                " is not below the image width " + std::to_string(wta.disparity.cols) +
+    throw std::invalid_argument("WtaRangeSensorModel: max disparity " + cairn::FormatShort(max_disparity) +
+                                " is not below the image width " + cairn::FormatShort(wta.disparity.cols) +
                                 "; pass the disparity range the matcher searched");
   }
   const int num_disp = max_disparity - min_disparity + 1;

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/stereo/confidence_model.h"
 
 #include <cmath>
@@ -88,7 +89,7 @@ ConfidenceModel ConfidenceModel::FitMaximumLikelihood(ConfidenceModelType type, 
   }
   if (n < 2) {
     throw std::invalid_argument("maximum-likelihood fit of '" + ConfidenceModelTypeName(type) + "' got " +
-                                std::to_string(n) +
+                                cairn::FormatShort(n) +
                                 " finite cost samples; the left-right check rejected (almost) every pixel, so "
                                 "check that the images are a rectified pair and the disparity range covers the scene");
   }

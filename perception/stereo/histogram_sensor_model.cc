@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/stereo/histogram_sensor_model.h"
 
 #include <algorithm>
@@ -9,7 +10,7 @@ namespace cairn::perception {
 
 HistogramSensorModel HistogramSensorModel::FromSamples(const std::vector<float>& samples, double pseudo_count) {
   if (!(pseudo_count > 0.0)) {
-    throw std::invalid_argument("HistogramSensorModel: pseudo_count " + std::to_string(pseudo_count) +
+    throw std::invalid_argument("HistogramSensorModel: pseudo_count " + cairn::FormatShort(pseudo_count) +
                                 " must be positive (1 is Laplace smoothing)");
   }
   double sum = 0.0;
@@ -18,7 +19,7 @@ HistogramSensorModel HistogramSensorModel::FromSamples(const std::vector<float>&
   for (float s : samples) {
     if (!std::isfinite(s)) continue;
     if (s < 0.0f) {
-      throw std::invalid_argument("HistogramSensorModel: cost sample " + std::to_string(s) +
+      throw std::invalid_argument("HistogramSensorModel: cost sample " + cairn::FormatShort(s) +
                                   " is negative; window costs (SSD, BTSAD) are non-negative");
     }
     sum += s;
@@ -26,7 +27,7 @@ HistogramSensorModel HistogramSensorModel::FromSamples(const std::vector<float>&
     ++n;
   }
   if (n < 2) {
-    throw std::invalid_argument("HistogramSensorModel: got " + std::to_string(n) +
+    throw std::invalid_argument("HistogramSensorModel: got " + cairn::FormatShort(n) +
                                 " finite cost samples; train on at least two (e.g. the costs at the ground-truth "
                                 "disparity of a whole image)");
   }
@@ -37,8 +38,8 @@ HistogramSensorModel HistogramSensorModel::FromSamples(const std::vector<float>&
   }
   const double sigma = std::sqrt(squares / static_cast<double>(n - 1));
   if (!(sigma > 0.0)) {
-    throw std::invalid_argument("HistogramSensorModel: all " + std::to_string(n) + " cost samples equal " +
-                                std::to_string(mean) + "; Scott's bin width needs spread, train on more varied costs");
+    throw std::invalid_argument("HistogramSensorModel: all " + cairn::FormatShort(n) + " cost samples equal " +
+                                cairn::FormatShort(mean) + "; Scott's bin width needs spread, train on more varied costs");
   }
   HistogramSensorModel model;
   model.num_samples_ = n;

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/bars_scenario.h"
 
 #include <cmath>
@@ -8,7 +9,7 @@ namespace cairn::perception {
 
 BarsScenario BarsScenario::Make(int frames) {
   if (frames < 1) {
-    throw std::invalid_argument("BarsScenario: " + std::to_string(frames) + " frames; ask for at least 1 (the thesis uses 20)");
+    throw std::invalid_argument("BarsScenario: " + cairn::FormatShort(frames) + " frames; ask for at least 1 (the thesis uses 20)");
   }
   BarsScenario s;
   s.calibration = StereoCalibration{600.0, 600.0, 319.5, 239.5, 0.3};

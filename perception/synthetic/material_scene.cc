@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/material_scene.h"
 
 #include <algorithm>
@@ -47,27 +48,27 @@ struct Hit {
 MaterialScene::MaterialScene(Options options) : options_(std::move(options)) {
   Options& o = options_;
   if (o.width <= 0 || o.height <= 0) {
-    throw std::invalid_argument("MaterialScene: the image size must be positive; got " + std::to_string(o.width) +
-                                "x" + std::to_string(o.height) + ".");
+    throw std::invalid_argument("MaterialScene: the image size must be positive; got " + cairn::FormatShort(o.width) +
+                                "x" + cairn::FormatShort(o.height) + ".");
   }
   if (!(o.field_of_view_deg > 10.0 && o.field_of_view_deg < 150.0)) {
     throw std::invalid_argument("MaterialScene: field_of_view_deg must be in (10, 150); got " +
-                                std::to_string(o.field_of_view_deg) + ".");
+                                cairn::FormatShort(o.field_of_view_deg) + ".");
   }
   if (o.num_regions < 1) {
     throw std::invalid_argument("MaterialScene: num_regions must be at least 1; got " +
-                                std::to_string(o.num_regions) + ".");
+                                cairn::FormatShort(o.num_regions) + ".");
   }
   if (o.num_boxes < 0) {
-    throw std::invalid_argument("MaterialScene: num_boxes must be >= 0; got " + std::to_string(o.num_boxes) + ".");
+    throw std::invalid_argument("MaterialScene: num_boxes must be >= 0; got " + cairn::FormatShort(o.num_boxes) + ".");
   }
   if (!(o.noise_stddev >= 0.0) || !std::isfinite(o.noise_stddev)) {
-    throw std::invalid_argument("MaterialScene: noise_stddev must be >= 0; got " + std::to_string(o.noise_stddev) +
+    throw std::invalid_argument("MaterialScene: noise_stddev must be >= 0; got " + cairn::FormatShort(o.noise_stddev) +
                                 ". Use 0 for noiseless renders.");
   }
   if (o.samples_per_axis < 1 || o.samples_per_axis > 8) {
     throw std::invalid_argument("MaterialScene: samples_per_axis must be in [1, 8]; got " +
-                                std::to_string(o.samples_per_axis) + ".");
+                                cairn::FormatShort(o.samples_per_axis) + ".");
   }
   internal::ResolveMaterialLabelSets("MaterialScene", &o.labels, &o.ground_labels, &o.box_labels);
 }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/material_texture.h"
 
 #include <algorithm>
@@ -120,7 +121,7 @@ MaterialTexture::MaterialTexture(Pattern pattern, const Parameters& parameters)
     : pattern_(pattern), parameters_(parameters) {
   if (!(parameters.scale > 0.0) || !std::isfinite(parameters.scale)) {
     throw std::invalid_argument("MaterialTexture: scale must be positive and finite; got " +
-                                std::to_string(parameters.scale) + ". Use 1 for the nominal feature size.");
+                                cairn::FormatShort(parameters.scale) + ". Use 1 for the nominal feature size.");
   }
   cos_ = std::cos(parameters.orientation);
   sin_ = std::sin(parameters.orientation);

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/occupancy_scenario.h"
 
 #include <cmath>
@@ -158,7 +159,7 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
   s.max_disparity = r.Integer(max_disparity, "stereo.max_disparity", s.min_disparity + 1);
   if (s.max_disparity >= s.width) {
     r.Fail(max_disparity, "stereo.max_disparity",
-           "is " + std::to_string(s.max_disparity) + " but the image is only " + std::to_string(s.width) +
+           "is " + cairn::FormatShort(s.max_disparity) + " but the image is only " + cairn::FormatShort(s.width) +
                " px wide; lower it or widen the camera");
   }
 
@@ -187,7 +188,7 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
   }
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const YAML::Node object = objects[i];
-    const std::string where = "objects[" + std::to_string(i) + "]";
+    const std::string where = "objects[" + cairn::FormatShort(i) + "]";
     if (!object.IsMap()) r.Fail(object, where, "must be a map with a 'type' key ('plane' or 'box')");
     const YAML::Node type = r.Required(object, where, "type");
     const std::string kind = type.IsScalar() ? type.Scalar() : std::string();
@@ -260,7 +261,7 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
       r.Fail(poses, "trajectory.poses", "must be a non-empty list of {position, look_at}");
     }
     for (std::size_t k = 0; k < poses.size(); ++k) {
-      const std::string where = "trajectory.poses[" + std::to_string(k) + "]";
+      const std::string where = "trajectory.poses[" + cairn::FormatShort(k) + "]";
       r.CheckMap(poses[k], where, {"position", "look_at"});
       const Eigen::Vector3d position = r.Vector3(r.Required(poses[k], where, "position"), where + ".position");
       const Eigen::Vector3d target = r.Vector3(r.Required(poses[k], where, "look_at"), where + ".look_at");
@@ -275,11 +276,11 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
   s.grid_resolution = r.Positive(r.Required(grid, "grid", "resolution"), "grid.resolution");
   const YAML::Node dims = r.Required(grid, "grid", "dims");
   if (!dims.IsSequence() || dims.size() != 3) r.Fail(dims, "grid.dims", "must be a list of 3 cell counts [nx, ny, nz]");
-  for (int a = 0; a < 3; ++a) s.grid_dims[a] = r.Integer(dims[a], "grid.dims[" + std::to_string(a) + "]", 1);
+  for (int a = 0; a < 3; ++a) s.grid_dims[a] = r.Integer(dims[a], "grid.dims[" + cairn::FormatShort(a) + "]", 1);
   const double cells = static_cast<double>(s.grid_dims.x()) * s.grid_dims.y() * s.grid_dims.z();
   if (cells > kMaxGridCells) {
     r.Fail(dims, "grid.dims",
-           "gives " + std::to_string(static_cast<long long>(cells)) + " cells, more than the 64 million allowed; " +
+           "gives " + cairn::FormatShort(static_cast<long long>(cells)) + " cells, more than the 64 million allowed; " +
                "use a coarser resolution or a smaller extent");
   }
   return s;

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/stereo_material_scene.h"
 
 #include <algorithm>
@@ -22,22 +23,22 @@ int IndexIn(const std::vector<std::string>& labels, const std::string& label, co
 StereoMaterialScene::Options Completed(StereoMaterialScene::Options o) {
   if (o.width <= 0 || o.height <= 0) {
     throw std::invalid_argument("StereoMaterialScene: the image size must be positive; got " +
-                                std::to_string(o.width) + "x" + std::to_string(o.height) + ".");
+                                cairn::FormatShort(o.width) + "x" + cairn::FormatShort(o.height) + ".");
   }
   if (!(o.field_of_view_deg > 10.0 && o.field_of_view_deg < 150.0)) {
     throw std::invalid_argument("StereoMaterialScene: field_of_view_deg must be in (10, 150); got " +
-                                std::to_string(o.field_of_view_deg) + ".");
+                                cairn::FormatShort(o.field_of_view_deg) + ".");
   }
   if (!(o.baseline > 0.0) || !std::isfinite(o.baseline)) {
     throw std::invalid_argument("StereoMaterialScene: baseline must be > 0 metres; got " +
-                                std::to_string(o.baseline) + ".");
+                                cairn::FormatShort(o.baseline) + ".");
   }
   if (o.tiles_per_side < 1) {
     throw std::invalid_argument("StereoMaterialScene: tiles_per_side must be at least 1; got " +
-                                std::to_string(o.tiles_per_side) + ".");
+                                cairn::FormatShort(o.tiles_per_side) + ".");
   }
   if (o.num_boxes < 0) {
-    throw std::invalid_argument("StereoMaterialScene: num_boxes must be >= 0; got " + std::to_string(o.num_boxes) +
+    throw std::invalid_argument("StereoMaterialScene: num_boxes must be >= 0; got " + cairn::FormatShort(o.num_boxes) +
                                 ".");
   }
   internal::ResolveMaterialLabelSets("StereoMaterialScene", &o.labels, &o.ground_labels, &o.box_labels);

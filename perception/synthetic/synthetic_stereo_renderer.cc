@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/synthetic_stereo_renderer.h"
 
 #include <algorithm>
@@ -16,11 +17,11 @@ SyntheticStereoRenderer::SyntheticStereoRenderer(const StereoCalibration& calibr
     : calibration_(calibration), width_(width), height_(height), noise_variance_(noise_variance), seed_(seed) {
   calibration.Validate();
   if (width <= 0 || height <= 0) {
-    throw std::invalid_argument("SyntheticStereoRenderer: image size " + std::to_string(width) + "x" +
-                                std::to_string(height) + " must be positive");
+    throw std::invalid_argument("SyntheticStereoRenderer: image size " + cairn::FormatShort(width) + "x" +
+                                cairn::FormatShort(height) + " must be positive");
   }
   if (!(noise_variance >= 0.0)) {
-    throw std::invalid_argument("SyntheticStereoRenderer: noise variance " + std::to_string(noise_variance) +
+    throw std::invalid_argument("SyntheticStereoRenderer: noise variance " + cairn::FormatShort(noise_variance) +
                                 " is negative; use 0 for noise-free images");
   }
 }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/synthetic_stereo_scene.h"
 
 #include <cmath>
@@ -31,8 +32,8 @@ int SyntheticStereoScene::AddBox(const Eigen::Isometry3d& X_WB, const Eigen::Vec
                                  const ProceduralTexture& texture, int label) {
   for (int i = 0; i < 3; ++i) {
     if (!(half_extents[i] > 0.0)) {
-      throw std::invalid_argument("SyntheticStereoScene::AddBox: half extent " + std::to_string(i) + " is " +
-                                  std::to_string(half_extents[i]) + "; every half extent must be positive");
+      throw std::invalid_argument("SyntheticStereoScene::AddBox: half extent " + cairn::FormatShort(i) + " is " +
+                                  cairn::FormatShort(half_extents[i]) + "; every half extent must be positive");
     }
   }
   objects_.push_back(Object{true, X_WB, X_WB.inverse(), half_extents, texture, label});
@@ -144,13 +145,13 @@ bool SyntheticStereoScene::OccupiesCube(const Eigen::Vector3d& center, double si
 
 void SyntheticStereoScene::SetColourTexture(int object, ColourTexture texture) {
   if (object < 0 || object >= num_objects()) {
-    throw std::invalid_argument("SyntheticStereoScene::SetColourTexture: object " + std::to_string(object) +
-                                " does not exist; the scene has " + std::to_string(num_objects()) +
+    throw std::invalid_argument("SyntheticStereoScene::SetColourTexture: object " + cairn::FormatShort(object) +
+                                " does not exist; the scene has " + cairn::FormatShort(num_objects()) +
                                 " objects (use the index AddPlane/AddBox returned)");
   }
   if (!texture) {
     throw std::invalid_argument("SyntheticStereoScene::SetColourTexture: the texture of object " +
-                                std::to_string(object) + " is an empty function");
+                                cairn::FormatShort(object) + " is an empty function");
   }
   if (colour_textures_.size() < objects_.size()) colour_textures_.resize(objects_.size());
   if (!colour_textures_[object]) ++num_colour_textures_;

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/synthetic_stereo_source.h"
 
 #include <algorithm>
@@ -18,7 +19,7 @@ SyntheticStereoSource::SyntheticStereoSource(SyntheticStereoScene scene, Synthet
     throw std::invalid_argument("SyntheticStereoSource: the trajectory is empty; give at least one camera pose");
   }
   if (!(period > 0.0) || !std::isfinite(period)) {
-    throw std::invalid_argument("SyntheticStereoSource: period " + std::to_string(period) +
+    throw std::invalid_argument("SyntheticStereoSource: period " + cairn::FormatShort(period) +
                                 " s must be positive and finite (e.g. 0.1 for 10 frames/s)");
   }
   frame_cache_ = DeclareCacheEntry(

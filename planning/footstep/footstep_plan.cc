@@ -1,3 +1,4 @@
+#include <cairn/common/number_text.h>
 #include <cairn/planning/footstep/footstep_plan.h>
 
 #include <algorithm>
@@ -9,8 +10,8 @@ namespace cairn::planning {
 
 Stance FootstepPlan::StanceAfter(int k) const {
   if (k < -1 || k >= static_cast<int>(steps.size())) {
-    throw std::out_of_range("FootstepPlan::StanceAfter: step " + std::to_string(k) + " is outside [-1, " +
-                            std::to_string(static_cast<int>(steps.size()) - 1) + "]");
+    throw std::out_of_range("FootstepPlan::StanceAfter: step " + cairn::FormatShort(k) + " is outside [-1, " +
+                            cairn::FormatShort(static_cast<int>(steps.size()) - 1) + "]");
   }
   Stance stance = start;
   for (int j = 0; j <= k; ++j) {

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/planning/locomotion/leg_torque_table.h"
 
 #include <algorithm>
@@ -189,8 +190,8 @@ double LegTorqueTable::JointLimitExcess(const Eigen::Vector3d& e) const {
 
 Eigen::Matrix<double, 6, 1> LegTorqueTable::NodeAngles(int i, int j, int k) const {
   if (i < 0 || i >= grid_.length_count || j < 0 || j >= grid_.pitch_count || k < 0 || k >= grid_.roll_count) {
-    throw std::out_of_range("LegTorqueTable::NodeAngles: node (" + std::to_string(i) + ", " + std::to_string(j) +
-                            ", " + std::to_string(k) + ") is outside the grid.");
+    throw std::out_of_range("LegTorqueTable::NodeAngles: node (" + cairn::FormatShort(i) + ", " + cairn::FormatShort(j) +
+                            ", " + cairn::FormatShort(k) + ") is outside the grid.");
   }
   const double* node = &nodes_[static_cast<std::size_t>(Index(i, j, k)) * kStride];
   Eigen::Matrix<double, 6, 1> angles;

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/planning/locomotion/transition_optimizer.h"
 
 #include <array>
@@ -119,7 +120,7 @@ TransitionCost OptimizeTransition(const WalkingModel& model, const StepDisplacem
                                   WalkingObjective objective, const StepParameters* warm_start,
                                   const TransitionOptimizerOptions& options) {
   if (!(mu_allowed >= 0.0) || !std::isfinite(mu_allowed)) {
-    throw std::invalid_argument("OptimizeTransition: mu_allowed is " + std::to_string(mu_allowed) +
+    throw std::invalid_argument("OptimizeTransition: mu_allowed is " + cairn::FormatShort(mu_allowed) +
                                 "; it must be a finite friction coefficient >= 0 (0 means not walkable).");
   }
   CheckFinite(d.dx, "dx");
@@ -128,8 +129,8 @@ TransitionCost OptimizeTransition(const WalkingModel& model, const StepDisplacem
   CheckFinite(d.dtheta, "dtheta");
   if (options.direct_max_evaluations < 1 || options.slsqp_max_evaluations < 1) {
     throw std::invalid_argument("OptimizeTransition: the evaluation budgets must be >= 1 (got direct " +
-                                std::to_string(options.direct_max_evaluations) + ", slsqp " +
-                                std::to_string(options.slsqp_max_evaluations) + ").");
+                                cairn::FormatShort(options.direct_max_evaluations) + ", slsqp " +
+                                cairn::FormatShort(options.slsqp_max_evaluations) + ").");
   }
   const StepParameters& lo = model.parameter_lower();
   const StepParameters& hi = model.parameter_upper();
@@ -137,8 +138,8 @@ TransitionCost OptimizeTransition(const WalkingModel& model, const StepDisplacem
     const StepParameters& w = *warm_start;
     if (!(w.t_ds >= lo.t_ds && w.t_ds <= hi.t_ds && w.t_sw >= lo.t_sw && w.t_sw <= hi.t_sw &&
           w.com_height >= lo.com_height && w.com_height <= hi.com_height)) {
-      throw std::invalid_argument("OptimizeTransition: the warm start (t_ds " + std::to_string(w.t_ds) + ", t_sw " +
-                                  std::to_string(w.t_sw) + ", com_height " + std::to_string(w.com_height) +
+      throw std::invalid_argument("OptimizeTransition: the warm start (t_ds " + cairn::FormatShort(w.t_ds) + ", t_sw " +
+                                  cairn::FormatShort(w.t_sw) + ", com_height " + cairn::FormatShort(w.com_height) +
                                   ") is outside the model's parameter bounds.");
     }
   }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/planning/locomotion/walking_pattern_generator.h"
 
 #include <cmath>
@@ -115,18 +116,18 @@ void GenerateWalkingPattern(const StepDisplacement& d, const StepParameters& p, 
   if (!(p.t_ds > 0.0) || !(p.t_sw > 0.0) || !(p.com_height > 0.0) || !std::isfinite(p.t_ds) ||
       !std::isfinite(p.t_sw) || !std::isfinite(p.com_height)) {
     throw std::invalid_argument("GenerateWalkingPattern: t_ds, t_sw and com_height must be positive and finite (got " +
-                                std::to_string(p.t_ds) + ", " + std::to_string(p.t_sw) + ", " +
-                                std::to_string(p.com_height) + ").");
+                                cairn::FormatShort(p.t_ds) + ", " + cairn::FormatShort(p.t_sw) + ", " +
+                                cairn::FormatShort(p.com_height) + ").");
   }
   if (!(gravity > 0.0) || !std::isfinite(gravity)) {
     throw std::invalid_argument("GenerateWalkingPattern: gravity must be positive and finite.");
   }
   if (options.samples_per_phase < 2) {
     throw std::invalid_argument("GenerateWalkingPattern: samples_per_phase must be >= 2 (got " +
-                                std::to_string(options.samples_per_phase) + ").");
+                                cairn::FormatShort(options.samples_per_phase) + ").");
   }
   if (d.dz != 0.0 && d.dx == 0.0) {
-    throw std::invalid_argument("GenerateWalkingPattern: dz = " + std::to_string(d.dz) +
+    throw std::invalid_argument("GenerateWalkingPattern: dz = " + cairn::FormatShort(d.dz) +
                                 " with dx = 0 has no periodic gait (each foot would land straight above its last "
                                 "foothold); give the step a forward component.");
   }

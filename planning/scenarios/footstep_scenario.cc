@@ -1,3 +1,4 @@
+#include <cairn/common/number_text.h>
 #include <cairn/planning/scenarios/footstep_scenario.h>
 
 #include <cmath>
@@ -169,11 +170,11 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
   }
   for (std::size_t k = 0; k < regions.size(); ++k) {
     const YAML::Node r = regions[k];
-    std::string where = "region " + std::to_string(k + 1);
+    std::string where = "region " + cairn::FormatShort(k + 1);
     if (r.IsMap() && r["name"]) where += " ('" + yaml.AsString(r["name"], "name") + "')";
     yaml.CheckKeys(r, {"name", "box", "polygon", "height", "slope", "friction", "material"}, where);
     Region region;
-    region.name = yaml.String(r, "name", where, "region " + std::to_string(k + 1));
+    region.name = yaml.String(r, "name", where, "region " + cairn::FormatShort(k + 1));
     region.polygon = ReadPolygon(yaml, r, where);
     region.height = yaml.Number(r, "height", where, 0.0);
     if (r["slope"]) {
@@ -212,7 +213,7 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
     if (!obstacles.IsSequence()) throw yaml.Error(obstacles, "'obstacles' must be a list of boxes.");
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
       const YAML::Node o = obstacles[k];
-      const std::string where = "obstacle " + std::to_string(k + 1);
+      const std::string where = "obstacle " + cairn::FormatShort(k + 1);
       yaml.CheckKeys(o, {"name", "min", "max", "yaw_deg"}, where);
       TerrainMap::Obstacle obstacle;
       obstacle.name = yaml.String(o, "name", where, where);

@@ -66,7 +66,7 @@ double IntegratorBase::Step(const System& system, Context* context, double t_max
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     if (!std::isfinite(x[i])) {
       throw std::runtime_error("Integrator '" + name() + "': the continuous state of '" + system.GetPathName() +
-                               "' became non-finite (element " + std::to_string(i) + " = " + FormatShort(x[i]) +
+                               "' became non-finite (element " + cairn::FormatShort(i) + " = " + FormatShort(x[i]) +
                                ") in the step from t = " + FormatShort(t) + " to " + FormatShort(reached) +
                                "; the simulation diverged: lower the maximum step size, use an error-controlled "
                                "integrator (rk45), or check the dynamics and gains.");

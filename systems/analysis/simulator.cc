@@ -164,7 +164,7 @@ void Simulator::PaceRealTime() {
 void Simulator::set_step_limit(int64_t steps) {
   if (steps < 1) {
     throw std::invalid_argument("Simulator::set_step_limit: the limit must be >= 1 step; got " +
-                                std::to_string(steps) + ".");
+                                cairn::FormatShort(steps) + ".");
   }
   step_limit_ = steps;
 }
@@ -195,7 +195,7 @@ void Simulator::CheckStepBudget(double t_final) {
   if (steps > static_cast<double>(step_limit_)) {
     throw std::invalid_argument("AdvanceTo(" + FormatShort(t_final) + "): simulating " + FormatShort(span) +
                                 " s from t = " + FormatShort(t) + " takes at least " + FormatShort(steps) +
-                                " steps (" + cause + "), more than the limit of " + std::to_string(step_limit_) +
+                                " steps (" + cause + "), more than the limit of " + cairn::FormatShort(step_limit_) +
                                 " (Simulator::set_step_limit); shorten the simulated time or lengthen the step or "
                                 "period.");
   }
@@ -223,7 +223,7 @@ SimulatorStatus Simulator::AdvanceTo(double t_final) {
   int64_t steps_here = 0;
   while (context_->get_time() < t_final) {
     if (steps_here == step_limit_) {
-      throw std::runtime_error("AdvanceTo(" + FormatShort(t_final) + ") took " + std::to_string(step_limit_) +
+      throw std::runtime_error("AdvanceTo(" + FormatShort(t_final) + ") took " + cairn::FormatShort(step_limit_) +
                                " steps, the limit (Simulator::set_step_limit), and reached only t = " +
                                FormatShort(context_->get_time()) +
                                "; the integrator's steps are small (loosen its accuracy or check the dynamics), "

@@ -19,7 +19,7 @@ namespace {
 void CheckFinite(const Eigen::Ref<const Eigen::VectorXd>& x, const std::string& what) {
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     if (!std::isfinite(x[i])) {
-      throw std::invalid_argument(what + ": element " + std::to_string(i) + " is " + FormatShort(x[i]) +
+      throw std::invalid_argument(what + ": element " + cairn::FormatShort(i) + " is " + FormatShort(x[i]) +
                                   "; states must be finite.");
     }
   }
@@ -136,8 +136,8 @@ Eigen::VectorBlock<Eigen::VectorXd> Context::get_mutable_continuous_state_vector
 void Context::SetContinuousState(const Eigen::Ref<const Eigen::VectorXd>& x) {
   if (x.size() != xc_size_) {
     throw std::invalid_argument("The continuous state of '" + system_path_name_ + "' has size " +
-                                std::to_string(xc_size_) + " but was given a vector of size " +
-                                std::to_string(x.size()) + ".");
+                                cairn::FormatShort(xc_size_) + " but was given a vector of size " +
+                                cairn::FormatShort(x.size()) + ".");
   }
   CheckFinite(x, "SetContinuousState on the context of '" + system_path_name_ + "'");
   get_mutable_continuous_state_vector() = x;
@@ -167,8 +167,8 @@ void Context::ThrowIfNotLeafState(const char* what, int index, int count) const 
                             "; it lives in the subsystems' contexts: use "
                             "diagram.GetSubsystemContext(subsystem, context).");
   }
-  throw std::out_of_range("System '" + system_path_name_ + "' has " + std::to_string(count) + " " + what +
-                          " entr" + (count == 1 ? "y" : "ies") + "; index " + std::to_string(index) +
+  throw std::out_of_range("System '" + system_path_name_ + "' has " + cairn::FormatShort(count) + " " + what +
+                          " entr" + (count == 1 ? "y" : "ies") + "; index " + cairn::FormatShort(index) +
                           " is out of range.");
 }
 
@@ -185,7 +185,7 @@ Eigen::VectorXd& Context::get_mutable_discrete_state(int group) {
 
 void Context::SetDiscreteState(int group, const Eigen::Ref<const Eigen::VectorXd>& value) {
   ThrowIfNotLeafState("discrete state", group, xd_.num_groups());
-  CheckFinite(value, "SetDiscreteState(" + std::to_string(group) + ") on the context of '" + system_path_name_ + "'");
+  CheckFinite(value, "SetDiscreteState(" + cairn::FormatShort(group) + ") on the context of '" + system_path_name_ + "'");
   xd_.set_value(group, value);
   NoteChange(xd_tickets_[group]);
 }
@@ -274,7 +274,7 @@ void Context::SetCachingRecursive(bool enabled) {
 int64_t Context::num_calculations(DependencyTicket ticket) const {
   if (!ticket.is_valid() || ticket.index() >= static_cast<int>(cache_.size()) ||
       !cache_[ticket.index()].has_value()) {
-    throw std::invalid_argument("Ticket " + std::to_string(ticket.index()) + " of '" + system_path_name_ +
+    throw std::invalid_argument("Ticket " + cairn::FormatShort(ticket.index()) + " of '" + system_path_name_ +
                                 "' is not a cached computation; pass an output port's or cache entry's ticket "
                                 "(LeafSystem::output_port_ticket(), cache_entry_ticket()).");
   }
@@ -283,8 +283,8 @@ int64_t Context::num_calculations(DependencyTicket ticket) const {
 
 const Context& Context::subcontext(int index) const {
   if (index < 0 || index >= num_subcontexts()) {
-    throw std::out_of_range("The context of '" + system_path_name_ + "' has " + std::to_string(num_subcontexts()) +
-                            " subcontext(s); index " + std::to_string(index) + " is out of range.");
+    throw std::out_of_range("The context of '" + system_path_name_ + "' has " + cairn::FormatShort(num_subcontexts()) +
+                            " subcontext(s); index " + cairn::FormatShort(index) + " is out of range.");
   }
   return *children_[index];
 }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/diagram.h"
 
 #include <stdexcept>
@@ -198,23 +199,23 @@ void Diagram::DoResolveOutput(const Context& context, int port, const System** l
 
 std::string Diagram::GraphvizEndpoint(int system, int port, bool input) const {
   const System& s = *systems_[system];
-  const std::string id = "s" + std::to_string(s.id());
-  const std::string suffix = (input ? "u" : "y") + std::to_string(port);
+  const std::string id = "s" + cairn::FormatShort(s.id());
+  const std::string suffix = (input ? "u" : "y") + cairn::FormatShort(port);
   // Leaves are record nodes with port fields; diagrams are clusters with a small node per exported port.
   if (dynamic_cast<const Diagram*>(&s) != nullptr) return id + "_" + suffix;
   return id + ":" + suffix;
 }
 
 void Diagram::DoGetGraphviz(std::string* dot, const std::string& indent) const {
-  const std::string id = "s" + std::to_string(this->id());
+  const std::string id = "s" + cairn::FormatShort(this->id());
   *dot += indent + "subgraph cluster_" + id + " {\n";
   const std::string inner = indent + "  ";
   *dot += inner + "label=\"" + get_name() + "\";\n";
   for (int i = 0; i < num_input_ports(); ++i) {
-    *dot += inner + id + "_u" + std::to_string(i) + " [shape=cds, label=\"" + get_input_port(i).get_name() + "\"];\n";
+    *dot += inner + id + "_u" + cairn::FormatShort(i) + " [shape=cds, label=\"" + get_input_port(i).get_name() + "\"];\n";
   }
   for (int i = 0; i < num_output_ports(); ++i) {
-    *dot += inner + id + "_y" + std::to_string(i) + " [shape=cds, label=\"" + get_output_port(i).get_name() +
+    *dot += inner + id + "_y" + cairn::FormatShort(i) + " [shape=cds, label=\"" + get_output_port(i).get_name() +
             "\"];\n";
   }
   for (const auto& system : systems_) system->DoGetGraphviz(dot, inner);
@@ -224,12 +225,12 @@ void Diagram::DoGetGraphviz(std::string* dot, const std::string& indent) const {
   }
   for (std::size_t i = 0; i < exported_inputs_.size(); ++i) {
     for (const auto& [s, p] : exported_inputs_[i]) {
-      *dot += inner + id + "_u" + std::to_string(i) + " -> " + GraphvizEndpoint(s, p, true) + ";\n";
+      *dot += inner + id + "_u" + cairn::FormatShort(i) + " -> " + GraphvizEndpoint(s, p, true) + ";\n";
     }
   }
   for (std::size_t i = 0; i < exported_outputs_.size(); ++i) {
     *dot += inner + GraphvizEndpoint(exported_outputs_[i].first, exported_outputs_[i].second, false) + " -> " + id +
-            "_y" + std::to_string(i) + ";\n";
+            "_y" + cairn::FormatShort(i) + ";\n";
   }
   *dot += indent + "}\n";
 }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/diagram_builder.h"
 
 #include <algorithm>
@@ -57,7 +58,7 @@ void DiagramBuilder::ThrowIfBuilt(const char* operation) const {
 std::string DiagramBuilder::UniqueName(const System& system) const {
   const std::string base = SnakeCaseTypeName(system);
   for (int k = 0;; ++k) {
-    const std::string candidate = base + "_" + std::to_string(k);
+    const std::string candidate = base + "_" + cairn::FormatShort(k);
     bool taken = false;
     for (const auto& other : systems_) taken = taken || other->get_name() == candidate;
     if (!taken) return candidate;
@@ -163,8 +164,8 @@ int DiagramBuilder::ExportInput(const InputPort& input, const std::string& name)
 void DiagramBuilder::ConnectInput(int diagram_input, const InputPort& input) {
   ThrowIfBuilt("ConnectInput");
   if (diagram_input < 0 || diagram_input >= static_cast<int>(exported_inputs_.size())) {
-    throw std::out_of_range("ConnectInput: the diagram has " + std::to_string(exported_inputs_.size()) +
-                            " exported input(s); index " + std::to_string(diagram_input) + " is out of range.");
+    throw std::out_of_range("ConnectInput: the diagram has " + cairn::FormatShort(exported_inputs_.size()) +
+                            " exported input(s); index " + cairn::FormatShort(diagram_input) + " is out of range.");
   }
   const PortLocator locator = Locate(input, "ConnectInput");
   const PortLocator first = exported_inputs_[diagram_input].front();

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/discrete_values.h"
 
 #include <stdexcept>
@@ -7,8 +8,8 @@ namespace cairn::systems {
 
 void DiscreteValues::CheckGroup(int group) const {
   if (group < 0 || group >= num_groups()) {
-    throw std::out_of_range("Discrete state group " + std::to_string(group) + " does not exist; there are " +
-                            std::to_string(num_groups()) + " group(s), indexed from 0.");
+    throw std::out_of_range("Discrete state group " + cairn::FormatShort(group) + " does not exist; there are " +
+                            cairn::FormatShort(num_groups()) + " group(s), indexed from 0.");
   }
 }
 
@@ -25,17 +26,17 @@ Eigen::VectorXd& DiscreteValues::get_mutable_value(int group) {
 void DiscreteValues::set_value(int group, const Eigen::Ref<const Eigen::VectorXd>& value) {
   CheckGroup(group);
   if (value.size() != groups_[group].size()) {
-    throw std::invalid_argument("Discrete state group " + std::to_string(group) + " has size " +
-                                std::to_string(groups_[group].size()) + " but was given a vector of size " +
-                                std::to_string(value.size()) + ".");
+    throw std::invalid_argument("Discrete state group " + cairn::FormatShort(group) + " has size " +
+                                cairn::FormatShort(groups_[group].size()) + " but was given a vector of size " +
+                                cairn::FormatShort(value.size()) + ".");
   }
   groups_[group] = value;
 }
 
 void DiscreteValues::SetFrom(const DiscreteValues& other) {
   if (other.num_groups() != num_groups()) {
-    throw std::invalid_argument("DiscreteValues::SetFrom: " + std::to_string(other.num_groups()) +
-                                " groups given for " + std::to_string(num_groups()) + ".");
+    throw std::invalid_argument("DiscreteValues::SetFrom: " + cairn::FormatShort(other.num_groups()) +
+                                " groups given for " + cairn::FormatShort(num_groups()) + ".");
   }
   for (int i = 0; i < num_groups(); ++i) set_value(i, other.groups_[i]);
 }

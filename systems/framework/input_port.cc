@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/input_port.h"
 
 #include <stdexcept>
@@ -43,7 +44,7 @@ void InputPort::ValidateValue(const AbstractValue& value) const {
     const auto actual = value.get_value<Eigen::VectorXd>().size();
     if (actual != size_) {
       throw std::invalid_argument("Cannot give the " + GetFullDescription() + " (" + GetTypeDescription() +
-                                  ") a vector of size " + std::to_string(actual) + ".");
+                                  ") a vector of size " + cairn::FormatShort(actual) + ".");
     }
   }
 }
@@ -78,7 +79,7 @@ std::string InputPort::GetFullDescription() const {
 }
 
 std::string InputPort::GetTypeDescription() const {
-  if (data_type_ == PortDataType::kVector) return "vector of size " + std::to_string(size_);
+  if (data_type_ == PortDataType::kVector) return "vector of size " + cairn::FormatShort(size_);
   return "abstract value of type " + model_value_->GetNiceTypeName();
 }
 

@@ -19,7 +19,7 @@ LeafSystem::~LeafSystem() = default;
 
 const InputPort& LeafSystem::DeclareVectorInputPort(std::string name, int size) {
   if (size < 0) {
-    throw std::invalid_argument("DeclareVectorInputPort('" + name + "'): size " + std::to_string(size) +
+    throw std::invalid_argument("DeclareVectorInputPort('" + name + "'): size " + cairn::FormatShort(size) +
                                 " is negative.");
   }
   return AddInputPort(std::move(name), PortDataType::kVector, size,
@@ -33,7 +33,7 @@ const InputPort& LeafSystem::DeclareAbstractInputPort(std::string name, const Ab
 const OutputPort& LeafSystem::DeclareVectorOutputPort(std::string name, int size, VectorCalc calc,
                                                       Prerequisites prerequisites) {
   if (size < 0) {
-    throw std::invalid_argument("DeclareVectorOutputPort('" + name + "'): size " + std::to_string(size) +
+    throw std::invalid_argument("DeclareVectorOutputPort('" + name + "'): size " + cairn::FormatShort(size) +
                                 " is negative.");
   }
   if (!calc) throw std::invalid_argument("DeclareVectorOutputPort('" + name + "'): the calc function is empty.");
@@ -44,8 +44,8 @@ const OutputPort& LeafSystem::DeclareVectorOutputPort(std::string name, int size
     calc(context, &y);
     if (y.size() != size) {
       throw std::logic_error("The calc function of the " + get_output_port(index).GetFullDescription() +
-                             " resized its output to " + std::to_string(y.size()) + " (declared size " +
-                             std::to_string(size) + "); write into the given vector without resizing it.");
+                             " resized its output to " + cairn::FormatShort(y.size()) + " (declared size " +
+                             cairn::FormatShort(size) + "); write into the given vector without resizing it.");
     }
   };
   return AddCachedOutput(std::move(name), PortDataType::kVector, size, Value<Eigen::VectorXd>(Eigen::VectorXd::Zero(size)),
@@ -120,8 +120,8 @@ AbstractValue& LeafSystem::MutablePerContextStorage(const Context& context, int 
   ValidateContext(context);
   if (index < 0 || index >= static_cast<int>(per_context_storage_models_.size())) {
     throw std::out_of_range("System '" + GetPathName() + "' declared " +
-                            std::to_string(per_context_storage_models_.size()) +
-                            " per-context storage entries; index " + std::to_string(index) + " is out of range.");
+                            cairn::FormatShort(per_context_storage_models_.size()) +
+                            " per-context storage entries; index " + cairn::FormatShort(index) + " is out of range.");
   }
   return *context.per_context_storage_[index];
 }
@@ -130,7 +130,7 @@ void LeafSystem::CheckFiniteInitialValue(const char* what, const Eigen::VectorXd
   for (Eigen::Index i = 0; i < value.size(); ++i) {
     if (!std::isfinite(value[i])) {
       throw std::invalid_argument("System '" + GetPathName() + "': the initial " + what + " has element " +
-                                  std::to_string(i) + " = " + FormatShort(value[i]) + "; states must be finite.");
+                                  cairn::FormatShort(i) + " = " + FormatShort(value[i]) + "; states must be finite.");
     }
   }
 }
@@ -165,7 +165,7 @@ void LeafSystem::CheckPrerequisites(const std::string& what, const Prerequisites
   for (DependencyTicket ticket : prerequisites) {
     // Only tickets handed out before this declaration are valid, which also rules out dependency cycles.
     if (!ticket.is_valid() || ticket.index() >= num_tickets()) {
-      throw std::invalid_argument("The " + what + " lists prerequisite ticket " + std::to_string(ticket.index()) +
+      throw std::invalid_argument("The " + what + " lists prerequisite ticket " + cairn::FormatShort(ticket.index()) +
                                   ", which this system has not declared (yet); declare what it depends on first.");
     }
   }
@@ -178,8 +178,8 @@ namespace {
 DependencyTicket TicketAt(const std::vector<DependencyTicket>& tickets, int index, const char* what,
                           const std::string& system) {
   if (index < 0 || index >= static_cast<int>(tickets.size())) {
-    throw std::out_of_range("System '" + system + "' has " + std::to_string(tickets.size()) + " " + what +
-                            "(s); index " + std::to_string(index) + " is out of range.");
+    throw std::out_of_range("System '" + system + "' has " + cairn::FormatShort(tickets.size()) + " " + what +
+                            "(s); index " + cairn::FormatShort(index) + " is out of range.");
   }
   return tickets[index];
 }
@@ -203,8 +203,8 @@ DependencyTicket LeafSystem::output_port_ticket(int port) const {
 }
 DependencyTicket LeafSystem::cache_entry_ticket(int index) const {
   if (index < 0 || index >= static_cast<int>(cache_entries_.size())) {
-    throw std::out_of_range("System '" + GetPathName() + "' has " + std::to_string(cache_entries_.size()) +
-                            " cache entries; index " + std::to_string(index) + " is out of range.");
+    throw std::out_of_range("System '" + GetPathName() + "' has " + cairn::FormatShort(cache_entries_.size()) +
+                            " cache entries; index " + cairn::FormatShort(index) + " is out of range.");
   }
   return cache_entries_[index].ticket;
 }

@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/output_port.h"
 
 #include <stdexcept>
@@ -43,7 +44,7 @@ std::string OutputPort::GetFullDescription() const {
 }
 
 std::string OutputPort::GetTypeDescription() const {
-  if (data_type_ == PortDataType::kVector) return "vector of size " + std::to_string(size_);
+  if (data_type_ == PortDataType::kVector) return "vector of size " + cairn::FormatShort(size_);
   return "abstract value of type " + model_value_->GetNiceTypeName();
 }
 

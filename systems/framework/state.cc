@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/state.h"
 
 #include <stdexcept>
@@ -12,8 +13,8 @@ State::State(Eigen::VectorXd continuous, DiscreteValues discrete,
 
 const AbstractValue& State::abstract_state_value(int index) const {
   if (index < 0 || index >= num_abstract_states()) {
-    throw std::out_of_range("Abstract state " + std::to_string(index) + " does not exist; there are " +
-                            std::to_string(num_abstract_states()) + ".");
+    throw std::out_of_range("Abstract state " + cairn::FormatShort(index) + " does not exist; there are " +
+                            cairn::FormatShort(num_abstract_states()) + ".");
   }
   return *abstract_[index];
 }

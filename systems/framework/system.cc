@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/system.h"
 
 #include <atomic>
@@ -54,16 +55,16 @@ std::string System::GetPathName() const {
 
 const InputPort& System::get_input_port(int index) const {
   if (index < 0 || index >= num_input_ports()) {
-    throw std::out_of_range("System '" + GetPathName() + "' has " + std::to_string(num_input_ports()) +
-                            " input port(s); index " + std::to_string(index) + " is out of range.");
+    throw std::out_of_range("System '" + GetPathName() + "' has " + cairn::FormatShort(num_input_ports()) +
+                            " input port(s); index " + cairn::FormatShort(index) + " is out of range.");
   }
   return *input_ports_[index];
 }
 
 const OutputPort& System::get_output_port(int index) const {
   if (index < 0 || index >= num_output_ports()) {
-    throw std::out_of_range("System '" + GetPathName() + "' has " + std::to_string(num_output_ports()) +
-                            " output port(s); index " + std::to_string(index) + " is out of range.");
+    throw std::out_of_range("System '" + GetPathName() + "' has " + cairn::FormatShort(num_output_ports()) +
+                            " output port(s); index " + cairn::FormatShort(index) + " is out of range.");
   }
   return *output_ports_[index];
 }
@@ -71,7 +72,7 @@ const OutputPort& System::get_output_port(int index) const {
 const InputPort& System::get_input_port() const {
   if (num_input_ports() != 1) {
     throw std::logic_error("get_input_port() without an index needs exactly one input port, but system '" +
-                           GetPathName() + "' has " + std::to_string(num_input_ports()) +
+                           GetPathName() + "' has " + cairn::FormatShort(num_input_ports()) +
                            "; pass an index or a name.");
   }
   return *input_ports_[0];
@@ -80,7 +81,7 @@ const InputPort& System::get_input_port() const {
 const OutputPort& System::get_output_port() const {
   if (num_output_ports() != 1) {
     throw std::logic_error("get_output_port() without an index needs exactly one output port, but system '" +
-                           GetPathName() + "' has " + std::to_string(num_output_ports()) +
+                           GetPathName() + "' has " + cairn::FormatShort(num_output_ports()) +
                            "; pass an index or a name.");
   }
   return *output_ports_[0];
@@ -117,7 +118,7 @@ void System::CheckPortNameIsNew(const std::string& name, bool input) const {
 
 InputPort& System::AddInputPort(std::string name, PortDataType data_type, int size,
                                 std::unique_ptr<AbstractValue> model_value) {
-  if (name.empty()) name = "u" + std::to_string(num_input_ports());
+  if (name.empty()) name = "u" + cairn::FormatShort(num_input_ports());
   CheckPortNameIsNew(name, true);
   input_ports_.push_back(std::unique_ptr<InputPort>(
       new InputPort(this, num_input_ports(), std::move(name), data_type, size, std::move(model_value), NewTicket())));
@@ -126,7 +127,7 @@ InputPort& System::AddInputPort(std::string name, PortDataType data_type, int si
 
 OutputPort& System::AddOutputPort(std::string name, PortDataType data_type, int size,
                                   std::unique_ptr<AbstractValue> model_value) {
-  if (name.empty()) name = "y" + std::to_string(num_output_ports());
+  if (name.empty()) name = "y" + cairn::FormatShort(num_output_ports());
   CheckPortNameIsNew(name, false);
   output_ports_.push_back(std::unique_ptr<OutputPort>(
       new OutputPort(this, num_output_ports(), std::move(name), data_type, size, std::move(model_value))));
@@ -202,14 +203,14 @@ void System::DoGetGraphviz(std::string* dot, const std::string& indent) const {
   // A record node: inputs on the left, the name in the middle, outputs on the right.
   std::string inputs;
   for (int i = 0; i < num_input_ports(); ++i) {
-    inputs += (i > 0 ? "|" : "") + std::string("<u") + std::to_string(i) + ">" + EscapeLabel(input_ports_[i]->get_name());
+    inputs += (i > 0 ? "|" : "") + std::string("<u") + cairn::FormatShort(i) + ">" + EscapeLabel(input_ports_[i]->get_name());
   }
   std::string outputs;
   for (int i = 0; i < num_output_ports(); ++i) {
-    outputs += (i > 0 ? "|" : "") + std::string("<y") + std::to_string(i) + ">" +
+    outputs += (i > 0 ? "|" : "") + std::string("<y") + cairn::FormatShort(i) + ">" +
                EscapeLabel(output_ports_[i]->get_name());
   }
-  *dot += indent + "s" + std::to_string(id_) + " [shape=record, label=\"{{" + inputs + "}|" + EscapeLabel(name_) +
+  *dot += indent + "s" + cairn::FormatShort(id_) + " [shape=record, label=\"{{" + inputs + "}|" + EscapeLabel(name_) +
           "|{" + outputs + "}}\"];\n";
 }
 

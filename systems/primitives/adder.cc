@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/primitives/adder.h"
 
 #include <stdexcept>
@@ -7,11 +8,11 @@ namespace cairn::systems {
 
 Adder::Adder(int num_inputs, int size) {
   if (num_inputs < 1) {
-    throw std::invalid_argument("Adder: needs at least one input; got num_inputs = " + std::to_string(num_inputs) +
+    throw std::invalid_argument("Adder: needs at least one input; got num_inputs = " + cairn::FormatShort(num_inputs) +
                                 ".");
   }
-  if (size < 1) throw std::invalid_argument("Adder: size must be positive; got " + std::to_string(size) + ".");
-  for (int i = 0; i < num_inputs; ++i) DeclareVectorInputPort("u" + std::to_string(i), size);
+  if (size < 1) throw std::invalid_argument("Adder: size must be positive; got " + cairn::FormatShort(size) + ".");
+  for (int i = 0; i < num_inputs; ++i) DeclareVectorInputPort("u" + cairn::FormatShort(i), size);
   DeclareVectorOutputPort("sum", size, &Adder::CalcSum, {all_input_ports_ticket()});
 }
 

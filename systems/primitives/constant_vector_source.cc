@@ -13,7 +13,7 @@ namespace {
 const Eigen::VectorXd& CheckedValue(const Eigen::VectorXd& value, const std::string& who) {
   for (Eigen::Index i = 0; i < value.size(); ++i) {
     if (std::isnan(value[i])) {
-      throw std::invalid_argument(who + ": element " + std::to_string(i) + " of the value is NaN; give a number.");
+      throw std::invalid_argument(who + ": element " + cairn::FormatShort(i) + " of the value is NaN; give a number.");
     }
   }
   return value;
@@ -31,8 +31,8 @@ void ConstantVectorSource::SetValue(Context* context, const Eigen::VectorXd& val
   ValidateContext(*context);
   if (value.size() != get_output_port().size()) {
     throw std::invalid_argument("ConstantVectorSource '" + GetPathName() + "' has size " +
-                                std::to_string(get_output_port().size()) + "; got a value of size " +
-                                std::to_string(value.size()) + ".");
+                                cairn::FormatShort(get_output_port().size()) + "; got a value of size " +
+                                cairn::FormatShort(value.size()) + ".");
   }
   context->get_mutable_numeric_parameter(0) = CheckedValue(value, "ConstantVectorSource '" + GetPathName() + "'");
 }

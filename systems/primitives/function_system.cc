@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/primitives/function_system.h"
 
 #include <stdexcept>
@@ -9,7 +10,7 @@ namespace cairn::systems {
 FunctionSystem::FunctionSystem(int input_size, int output_size, Function function) : function_(std::move(function)) {
   if (input_size < 0 || output_size < 1) {
     throw std::invalid_argument("FunctionSystem: needs input_size >= 0 and output_size >= 1; got " +
-                                std::to_string(input_size) + " and " + std::to_string(output_size) + ".");
+                                cairn::FormatShort(input_size) + " and " + cairn::FormatShort(output_size) + ".");
   }
   if (!function_) throw std::invalid_argument("FunctionSystem: the function is empty.");
   if (input_size > 0) DeclareVectorInputPort("u", input_size);
@@ -22,7 +23,7 @@ void FunctionSystem::CalcOutput(const Context& context, Eigen::VectorXd* y) cons
   Eigen::VectorXd result = function_(context.get_time(), u);
   if (result.size() != y->size()) {
     throw std::logic_error("The function of FunctionSystem '" + GetPathName() + "' returned a vector of size " +
-                           std::to_string(result.size()) + "; the output has size " + std::to_string(y->size()) +
+                           cairn::FormatShort(result.size()) + "; the output has size " + cairn::FormatShort(y->size()) +
                            ".");
   }
   *y = std::move(result);

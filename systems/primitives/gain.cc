@@ -10,7 +10,7 @@ namespace cairn::systems {
 namespace {
 
 int CheckedSize(int size) {
-  if (size <= 0) throw std::invalid_argument("Gain: size must be positive; got " + std::to_string(size) + ".");
+  if (size <= 0) throw std::invalid_argument("Gain: size must be positive; got " + cairn::FormatShort(size) + ".");
   return size;
 }
 
@@ -23,7 +23,7 @@ Gain::Gain(const Eigen::VectorXd& k) : k_(k) {
   if (size < 1) throw std::invalid_argument("Gain: the gain vector must not be empty.");
   for (int i = 0; i < size; ++i) {
     if (!std::isfinite(k[i])) {
-      throw std::invalid_argument("Gain: gain element " + std::to_string(i) + " is " + FormatShort(k[i]) +
+      throw std::invalid_argument("Gain: gain element " + cairn::FormatShort(i) + " is " + FormatShort(k[i]) +
                                   "; gains must be finite.");
     }
   }

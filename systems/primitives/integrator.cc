@@ -9,7 +9,7 @@
 namespace cairn::systems {
 
 Integrator::Integrator(int size) : Integrator(Eigen::VectorXd::Zero(size < 1 ? 1 : size)) {
-  if (size < 1) throw std::invalid_argument("Integrator: size must be positive; got " + std::to_string(size) + ".");
+  if (size < 1) throw std::invalid_argument("Integrator: size must be positive; got " + cairn::FormatShort(size) + ".");
 }
 
 Integrator::Integrator(const Eigen::VectorXd& initial_value) {
@@ -17,7 +17,7 @@ Integrator::Integrator(const Eigen::VectorXd& initial_value) {
   if (size < 1) throw std::invalid_argument("Integrator: the initial value must not be empty.");
   for (int i = 0; i < size; ++i) {
     if (!std::isfinite(initial_value[i])) {
-      throw std::invalid_argument("Integrator: initial value element " + std::to_string(i) + " is " +
+      throw std::invalid_argument("Integrator: initial value element " + cairn::FormatShort(i) + " is " +
                                   FormatShort(initial_value[i]) + "; it must be finite.");
     }
   }

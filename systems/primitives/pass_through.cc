@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/systems/primitives/pass_through.h"
 
 #include <stdexcept>
@@ -6,7 +7,7 @@
 namespace cairn::systems {
 
 PassThrough::PassThrough(int size) {
-  if (size < 1) throw std::invalid_argument("PassThrough: size must be positive; got " + std::to_string(size) + ".");
+  if (size < 1) throw std::invalid_argument("PassThrough: size must be positive; got " + cairn::FormatShort(size) + ".");
   const auto& u = DeclareVectorInputPort("u", size);
   DeclareVectorOutputPort(
       "y", size, [this](const Context& context, Eigen::VectorXd* y) { *y = get_input_port().Eval<Eigen::VectorXd>(context); },

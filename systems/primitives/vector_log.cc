@@ -11,9 +11,9 @@
 namespace cairn::systems {
 
 VectorLog::VectorLog(int size, int capacity) : size_(size), capacity_(capacity) {
-  if (size < 0) throw std::invalid_argument("VectorLog: size must be >= 0; got " + std::to_string(size) + ".");
+  if (size < 0) throw std::invalid_argument("VectorLog: size must be >= 0; got " + cairn::FormatShort(size) + ".");
   if (capacity < 1) {
-    throw std::invalid_argument("VectorLog: capacity must be >= 1 sample; got " + std::to_string(capacity) + ".");
+    throw std::invalid_argument("VectorLog: capacity must be >= 1 sample; got " + cairn::FormatShort(capacity) + ".");
   }
 }
 
@@ -27,15 +27,15 @@ Eigen::Map<const Eigen::MatrixXd> VectorLog::data() const {
 
 void VectorLog::AddData(double time, const Eigen::Ref<const Eigen::VectorXd>& value) {
   if (value.size() != size_) {
-    throw std::invalid_argument("VectorLog of size " + std::to_string(size_) + " was given a sample of size " +
-                                std::to_string(value.size()) + ".");
+    throw std::invalid_argument("VectorLog of size " + cairn::FormatShort(size_) + " was given a sample of size " +
+                                cairn::FormatShort(value.size()) + ".");
   }
   if (!std::isfinite(time)) {
     throw std::invalid_argument("VectorLog: the sample time " + FormatShort(time) + " must be finite.");
   }
   if (num_samples() >= capacity_) {
-    throw std::runtime_error("VectorLog of size " + std::to_string(size_) + " is full: it holds its capacity of " +
-                             std::to_string(capacity_) + " samples (reached at t = " + FormatShort(time) +
+    throw std::runtime_error("VectorLog of size " + cairn::FormatShort(size_) + " is full: it holds its capacity of " +
+                             cairn::FormatShort(capacity_) + " samples (reached at t = " + FormatShort(time) +
                              "); log less often (a publish period instead of every step, or a longer one), simulate "
                              "a shorter time, or give the VectorLogSink a larger capacity.");
   }
@@ -50,12 +50,12 @@ void VectorLog::Clear() {
 
 void VectorLog::WriteCsv(const std::string& path, const std::vector<std::string>& column_names) const {
   if (!column_names.empty() && static_cast<int>(column_names.size()) != size_) {
-    throw std::invalid_argument("VectorLog::WriteCsv: " + std::to_string(column_names.size()) +
-                                " column names for a log of size " + std::to_string(size_) +
+    throw std::invalid_argument("VectorLog::WriteCsv: " + cairn::FormatShort(column_names.size()) +
+                                " column names for a log of size " + cairn::FormatShort(size_) +
                                 "; pass one name per element or none.");
   }
   std::string text = "time";
-  for (int i = 0; i < size_; ++i) text += "," + (column_names.empty() ? "x" + std::to_string(i) : column_names[i]);
+  for (int i = 0; i < size_; ++i) text += "," + (column_names.empty() ? "x" + cairn::FormatShort(i) : column_names[i]);
   text += "\n";
   char number[32];
   for (int k = 0; k < num_samples(); ++k) {

@@ -9,13 +9,13 @@
 namespace cairn::systems {
 
 VectorLogSink::VectorLogSink(int size, double publish_period, int capacity) {
-  if (size < 1) throw std::invalid_argument("VectorLogSink: size must be positive; got " + std::to_string(size) + ".");
+  if (size < 1) throw std::invalid_argument("VectorLogSink: size must be positive; got " + cairn::FormatShort(size) + ".");
   if (!(publish_period >= 0.0) || !std::isfinite(publish_period)) {
     throw std::invalid_argument("VectorLogSink: publish_period must be >= 0 and finite (0 = every step); got " +
                                 FormatShort(publish_period) + ".");
   }
   if (capacity < 1) {
-    throw std::invalid_argument("VectorLogSink: capacity must be >= 1 sample; got " + std::to_string(capacity) + ".");
+    throw std::invalid_argument("VectorLogSink: capacity must be >= 1 sample; got " + cairn::FormatShort(capacity) + ".");
   }
   DeclareVectorInputPort("data", size);
   log_index_ = DeclarePerContextStorage(Value<VectorLog>(VectorLog(size, capacity)));

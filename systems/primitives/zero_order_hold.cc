@@ -20,7 +20,7 @@ double CheckedPeriod(double period) {
 }  // namespace
 
 ZeroOrderHold::ZeroOrderHold(double period, int size) : period_(CheckedPeriod(period)) {
-  if (size < 1) throw std::invalid_argument("ZeroOrderHold: size must be positive; got " + std::to_string(size) + ".");
+  if (size < 1) throw std::invalid_argument("ZeroOrderHold: size must be positive; got " + cairn::FormatShort(size) + ".");
   DeclareVectorInputPort("u", size);
   const int held = DeclareDiscreteState(Eigen::VectorXd::Zero(size));
   DeclareVectorOutputPort(

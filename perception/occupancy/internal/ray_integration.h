@@ -14,6 +14,7 @@
 
 #include <Eigen/Geometry>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/parallel_for.h"
 #include "cairn/perception/internal/multiversion.h"
 #include "cairn/perception/occupancy/grid_walk.h"
@@ -412,9 +413,9 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
                    const Eigen::Isometry3d& X_WC, const RayIntegrationOptions& options, const Curve& curve,
                    OccupancyGrid* grid) {
   if (static_cast<int64_t>(height) * width > PackedLogOdds::kMaxRays) {
-    throw std::invalid_argument("occupancy update: " + std::to_string(width) + "x" + std::to_string(height) +
+    throw std::invalid_argument("occupancy update: " + cairn::FormatShort(width) + "x" + cairn::FormatShort(height) +
                                 " rays per frame exceed the per-frame limit of " +
-                                std::to_string(PackedLogOdds::kMaxRays) + "; downsample the confidence volume");
+                                cairn::FormatShort(PackedLogOdds::kMaxRays) + "; downsample the confidence volume");
   }
   const double max_log_odds = std::max(std::abs(std::log(options.min_probability / (1.0 - options.min_probability))),
                                       std::abs(std::log(options.max_probability / (1.0 - options.max_probability))));
@@ -423,14 +424,14 @@ void IntegrateRays(int height, int width, int dmin, int num_disp, const StereoCa
   const float float_max = static_cast<float>(options.max_probability);
   if (!(max_log_odds < PackedLogOdds::kMaxLogOdds) || !(float_min > 0.0f) || !(float_max < 1.0f) ||
       !(float_max / (1.0f - float_max) < std::numeric_limits<float>::infinity())) {
-    throw std::invalid_argument("occupancy update: probability limits [" + std::to_string(options.min_probability) +
-                                ", " + std::to_string(options.max_probability) +
+    throw std::invalid_argument("occupancy update: probability limits [" + cairn::FormatShort(options.min_probability) +
+                                ", " + cairn::FormatShort(options.max_probability) +
                                 "] are too close to 0 or 1; use limits like [0.12, 0.97]");
   }
   // The fixed-point disparities of the walk need them below 2^20.
   const int64_t max_disparity = static_cast<int64_t>(dmin) + num_disp - 1;
   if (max_disparity >= (int64_t{1} << 20)) {
-    throw std::invalid_argument("occupancy update: max disparity " + std::to_string(max_disparity) +
+    throw std::invalid_argument("occupancy update: max disparity " + cairn::FormatShort(max_disparity) +
                                 " is 2^20 or more; pass the disparity range the matcher searched");
   }
   // As many threads as ParallelFor() will run (no more than rows), one accumulator each.

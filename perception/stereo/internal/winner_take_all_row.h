@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cairn/common/number_text.h"
 #include "cairn/perception/stereo/winner_take_all.h"
 
 namespace cairn::perception::internal {
@@ -16,7 +17,7 @@ namespace cairn::perception::internal {
 /// Throws std::invalid_argument for options ComputeWinnerTakeAll() rejects.
 inline void ValidateWtaOptions(const WtaOptions& options) {
   if (options.lr_tolerance < 0) {
-    throw std::invalid_argument("WtaOptions::lr_tolerance " + std::to_string(options.lr_tolerance) +
+    throw std::invalid_argument("WtaOptions::lr_tolerance " + cairn::FormatShort(options.lr_tolerance) +
                                 " is negative; use 0 (exact) or 1 (the usual tolerance)");
   }
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/text_suggestions.h"
 #include "cairn/perception/synthetic/material_texture.h"
 
@@ -33,7 +34,7 @@ inline void ResolveMaterialLabelSets(const char* who, std::vector<std::string>* 
   if (labels->empty()) *labels = MaterialTexture::SupportedLabels();
   if (labels->size() >= 255) {
     throw std::invalid_argument(std::string(who) + ": at most 254 labels fit an 8-bit label image; got " +
-                                std::to_string(labels->size()) + ".");
+                                cairn::FormatShort(labels->size()) + ".");
   }
   for (const std::string& label : *labels) MaterialTexture::PatternOf(label);  // Throws for a label without texture.
   if (ground_labels->empty()) {

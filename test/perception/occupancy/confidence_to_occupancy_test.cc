@@ -51,7 +51,7 @@ TEST(ConfidenceToOccupancyTest, IntegratesOneFramePerPeriodFromFixedInputs) {
 
 TEST(ConfidenceToOccupancyTest, RejectsBadPeriod) {
   CAIRN_EXPECT_THROWS_WITH(ConfidenceToOccupancy(SmallGrid(), kCalibration, -1.0), std::invalid_argument,
-                           "period -1.0", "positive");
+                           "period -1 s", "positive");
 }
 
 // Source -> matcher -> grid, simulated: the same grid as calling the algorithms frame by frame.

@@ -56,7 +56,7 @@ TEST(SyntheticStereoSourceTest, RejectsBadArguments) {
   CAIRN_EXPECT_THROWS_WITH(SyntheticStereoSource(WallScene(), renderer, {}, 0.1), std::invalid_argument,
                            "trajectory is empty");
   CAIRN_EXPECT_THROWS_WITH(SyntheticStereoSource(WallScene(), renderer, SlideAlongX(1), 0.0), std::invalid_argument,
-                           "period 0.0", "positive");
+                           "period 0 s", "positive");
 }
 
 }  // namespace
