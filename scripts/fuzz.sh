@@ -36,7 +36,15 @@ case "$seconds" in
 esac
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
-command -v clang++ >/dev/null 2>&1 || { echo "fuzz.sh: clang++ not found; apt-get install clang libclang-rt-14-dev" >&2; exit 1; }
+"$root/scripts/install_deps.sh" >&2
+# libFuzzer and the sanitizer runtimes come with Debian's clang (clang 14 on Debian 12).
+if ! command -v clang++ >/dev/null 2>&1 || ! dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "ok installed"; then
+  sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  echo "fuzz.sh: installing clang and libclang-rt-14-dev" >&2
+  ${sudo[@]+"${sudo[@]}"} apt-get update >&2
+  DEBIAN_FRONTEND=noninteractive ${sudo[@]+"${sudo[@]}"} apt-get install -y --no-install-recommends clang libclang-rt-14-dev >&2
+fi
 build_dir="$root/build-fuzz"
 shared_dir="${CAIRN_SHARED_DIR:-$root/../shared}"
 generator=()
