@@ -135,7 +135,9 @@ TEST_P(FuzzRegressionTest, IsRefusedWithAClearError) {
   std::string error;
   const std::string outcome = Outcome(target, ReadBytes(GetParam().path), &error);
   EXPECT_EQ(outcome, "") << GetParam().path;
-  if (outcome.empty()) EXPECT_NE(error, "") << GetParam().path << " was accepted; a crashing input should be refused.";
+  if (outcome.empty()) {
+    EXPECT_NE(error, "") << GetParam().path << " was accepted; a crashing input should be refused.";
+  }
   if (!error.empty()) std::cout << "refused: " << error << "\n";
 }
 
