@@ -52,11 +52,13 @@ function(cairn_add_library name)
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endfunction()
 
-# cairn_add_test(<name> SOURCES ... [LIBS ...])
+# cairn_add_test(<name> SOURCES ... [LIBS ...] [SANITIZE_SLOW <Suite.Test>...])
 # One GoogleTest executable per test folder; every TEST becomes its own ctest entry. Tests find the repository
-# and the shared data through the compile definitions CAIRN_SOURCE_DIR and CAIRN_SHARED_DIR.
+# and the shared data through the compile definitions CAIRN_SOURCE_DIR and CAIRN_SHARED_DIR. The tests named in
+# SANITIZE_SLOW (exact names: a misspelt one labels nothing) get the ctest label sanitize_slow, which
+# scripts/test.sh leaves out of the sanitized suite.
 function(cairn_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;SANITIZE_SLOW" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_compile_options(${name} PRIVATE ${CAIRN_WARNING_FLAGS})
   target_compile_definitions(${name} PRIVATE
@@ -70,6 +72,17 @@ function(cairn_add_test name)
     list(APPEND properties ENVIRONMENT "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/test/support/lsan.supp")
   endif()
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 120 PROPERTIES ${properties})
+  if(ARG_SANITIZE_SLOW)
+    # ctest defines the discovered tests from the include file gtest_discover_tests registered; this one is
+    # registered after it, so the tests exist when it labels them.
+    set(labels_file "${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake")
+    set(labels "")
+    foreach(test ${ARG_SANITIZE_SLOW})
+      string(APPEND labels "set_tests_properties([==[${test}]==] PROPERTIES LABELS sanitize_slow)\n")
+    endforeach()
+    file(WRITE "${labels_file}" "${labels}")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${labels_file}")
+  endif()
 endfunction()
 
 # cairn_add_benchmark(<name> SOURCES ... [LIBS ...])

@@ -7,10 +7,12 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 sanitize=OFF
+benchmarks=ON
 build_dir="$root/build"
 for arg in "$@"; do
   case "$arg" in
-    --sanitize) sanitize=ON; build_dir="$root/build-sanitize" ;;
+    # Benchmarks measure nothing useful under the sanitizers: the sanitized build leaves them out.
+    --sanitize) sanitize=ON; benchmarks=OFF; build_dir="$root/build-sanitize" ;;
     *) echo "build.sh: unknown option '$arg' (known: --sanitize)" >&2; exit 2 ;;
   esac
 done
@@ -20,9 +22,10 @@ done
 generator=()
 if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCAIRN_SANITIZE="$sanitize" >&2
+  cmake -S "$root" -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCAIRN_SANITIZE="$sanitize" \
+    -DCAIRN_BENCHMARKS="$benchmarks" >&2
 else
-  cmake "$build_dir" -DCAIRN_SANITIZE="$sanitize" >&2
+  cmake "$build_dir" -DCAIRN_SANITIZE="$sanitize" -DCAIRN_BENCHMARKS="$benchmarks" >&2
 fi
 cmake --build "$build_dir" --parallel "$(nproc)" >&2
 echo "$build_dir"
