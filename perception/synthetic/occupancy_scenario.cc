@@ -14,6 +14,10 @@
 namespace cairn::perception {
 namespace {
 
+// Every pose of an orbit is built when the file is read, before a frame limit on the command line could cut the
+// sequence short, so the count is bounded here (10^4 frames is 1000 s of camera motion at 10 frames/s).
+constexpr int kMaxOrbitFrames = 10000;
+
 using cairn::internal::YamlReader;
 
 // Larger grids are almost certainly a typo in `resolution` or `dims` (4 bytes of log-odds per cell, plus the
@@ -48,8 +52,9 @@ class Reader {
     return value;
   }
 
-  int Integer(const YAML::Node& node, const std::string& key, int min_value) const {
-    return static_cast<int>(yaml_.AsInteger(node, key, min_value, std::numeric_limits<int>::max()));
+  int Integer(const YAML::Node& node, const std::string& key, int min_value,
+              int max_value = std::numeric_limits<int>::max()) const {
+    return static_cast<int>(yaml_.AsInteger(node, key, min_value, max_value));
   }
 
   Eigen::Vector3d Vector3(const YAML::Node& node, const std::string& key) const {
@@ -247,7 +252,7 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
     const double height = orbit["height"] ? r.Number(orbit["height"], where + ".height") : 0.0;
     const double start = r.Number(r.Required(orbit, where, "start_deg"), where + ".start_deg");
     const double end = r.Number(r.Required(orbit, where, "end_deg"), where + ".end_deg");
-    const int frames = r.Integer(r.Required(orbit, where, "frames"), where + ".frames", 1);
+    const int frames = r.Integer(r.Required(orbit, where, "frames"), where + ".frames", 1, kMaxOrbitFrames);
     const Eigen::Vector3d target = orbit["look_at"] ? r.Vector3(orbit["look_at"], where + ".look_at") : center;
     for (int f = 0; f < frames; ++f) {
       const double angle = (frames == 1 ? start : start + (end - start) * f / (frames - 1)) * M_PI / 180.0;

@@ -175,10 +175,12 @@ WalkingModel WalkingModel::Load(const std::string& yaml_path) {
   if (!std::filesystem::exists(urdf_path)) {
     r.Fail("urdf", root["urdf"], "the file '" + urdf_path + "' does not exist (paths are relative to the YAML's folder).");
   }
-  const std::string urdf_text = ReadFile(urdf_path, "URDF");
   multibody::UrdfOptions urdf_options;
   urdf_options.floating_base = true;
+  // The parser bounds what it reads (a device such as /dev/zero is refused), so the model is parsed before the
+  // file's bytes are read again for the content hash.
   auto impl = std::make_shared<Impl>(multibody::ParseUrdfFile(urdf_path, urdf_options));
+  const std::string urdf_text = ReadFile(urdf_path, "URDF");
   impl->name = name;
   impl->yaml_path = yaml_path;
   impl->urdf_path = urdf_path;
