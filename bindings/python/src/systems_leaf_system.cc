@@ -112,6 +112,12 @@ PyLeafSystem& PythonLeaf(py::handle self, const char* method) {
                          " declares structure of a LeafSystem subclass written in Python (call it in __init__); a "
                          "C++ system's structure is fixed by its constructor");
   }
+  // A builder or diagram has recorded the ports and state it found; changing them now would break it.
+  if (!GetInstanceAttribute(self, "_cairn_owner").is_none()) {
+    throw std::logic_error(std::string("LeafSystem.") + method + " on system '" + leaf->get_name() +
+                           "', which already belongs to a DiagramBuilder or Diagram: declare ports, state and events "
+                           "in __init__, before adding the system.");
+  }
   return *leaf;
 }
 
