@@ -34,3 +34,23 @@ if(CAIRN_BUILD_TESTS OR CAIRN_BENCHMARKS)
   find_package(DART 6.12 CONFIG REQUIRED COMPONENTS utils-urdf)
   find_package(octomap CONFIG QUIET)
 endif()
+
+# Python bindings (bindings/python): Debian's /usr/bin/python3 with numpy (the python3 on PATH may be another
+# interpreter without it) and pybind11. Not searched for sanitized builds: an AddressSanitizer-instrumented extension
+# loads only into a python3 started with the sanitizer runtime in LD_PRELOAD. CAIRN_WITH_PYTHON (top-level
+# CMakeLists.txt) defaults to whether both were found.
+set(CAIRN_PYTHON_FOUND OFF)
+if(NOT CAIRN_SANITIZE AND (NOT DEFINED CAIRN_WITH_PYTHON OR CAIRN_WITH_PYTHON))
+  if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python_EXECUTABLE /usr/bin/python3)
+  endif()
+  set(PYBIND11_FINDPYTHON ON)
+  # Development.Embed (libpython) only for benchmarks/binding_benchmark.cc, which embeds the interpreter.
+  find_package(Python 3.11 COMPONENTS Interpreter Development.Module NumPy OPTIONAL_COMPONENTS Development.Embed)
+  if(Python_FOUND)
+    find_package(pybind11 2.10 CONFIG)
+  endif()
+  if(Python_FOUND AND pybind11_FOUND)
+    set(CAIRN_PYTHON_FOUND ON)
+  endif()
+endif()

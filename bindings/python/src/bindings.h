@@ -1,0 +1,35 @@
+#pragma once
+
+/// @file
+/// The parts of the `cairn` Python module, one translation unit each (compile time: each is a few seconds of
+/// pybind11 templates, and they build in parallel).
+
+#include <pybind11/pybind11.h>
+
+namespace cairn::python {
+
+namespace py = pybind11;
+
+/// cairn.systems: the framework (System, Context, ports, values, LeafSystem for Python subclasses, Diagram,
+/// DiagramBuilder).
+void DefineSystemsFramework(py::module_ m);
+/// cairn.systems: LeafSystem, subclassable from Python.
+void DefineSystemsLeafSystem(py::module_ m);
+/// cairn.systems: Simulator, integrators and the primitives.
+void DefineSystemsAnalysisAndPrimitives(py::module_ m);
+/// cairn.optimization.
+void DefineOptimization(py::module_ m);
+/// cairn.multibody.
+void DefineMultibody(py::module_ m);
+/// cairn.perception: stereo and occupancy.
+void DefinePerceptionStereoOccupancy(py::module_ m);
+/// cairn.perception: friction.
+void DefinePerceptionFriction(py::module_ m);
+/// cairn.perception: synthetic scenes and evaluation (Middlebury, scores).
+void DefinePerceptionSyntheticEvaluation(py::module_ m);
+/// cairn.planning.
+void DefinePlanning(py::module_ m);
+/// cairn.examples: the example systems the C++ examples are built from.
+void DefineExamples(py::module_ m);
+
+}  // namespace cairn::python

@@ -1,0 +1,100 @@
+"""cairn.planning: scenarios, terrain, the oracle, PlanFootsteps, FootstepPlanner in a diagram, plans as values."""
+
+import json
+import pickle
+
+import numpy as np
+import pytest
+
+import cairn.planning as planning
+from cairn.systems import ConstantValueSource, DiagramBuilder
+from conftest import source_path
+
+ICE = source_path("examples", "scenarios", "ice_narrow_012.yaml")
+
+
+def budgeted(options, expansions=20000):
+    options.search.max_expansions = expansions
+    options.search.time_limit = float("inf")
+    return options
+
+
+def test_scenario_and_terrain():
+    scenario = planning.FootstepScenario.Load(ICE)
+    assert scenario.name() == "narrow ice, mu 0.12"
+    assert [r.name for r in scenario.regions()] == ["ground", "ice"]
+    terrain = scenario.BuildTerrain()
+    col, row = terrain.CellAt(1.5, 0.0)
+    assert terrain.friction(col, row) == pytest.approx(0.12)
+    assert terrain.friction(*terrain.CellAt(0.5, 1.0)) == pytest.approx(1.0)
+    assert terrain.frictions().shape == (terrain.rows(), terrain.cols())
+    assert terrain.CellAt(100.0, 0.0) is None
+    with pytest.raises(IndexError):
+        terrain.height(terrain.cols(), 0)
+    with pytest.raises(ValueError, match="missing.yaml"):
+        planning.FootstepScenario.Load(source_path("examples", "scenarios", "missing.yaml"))
+
+
+def test_plan_footsteps_on_ice(walking_model, oracle):
+    scenario = planning.FootstepScenario.Load(ICE)
+    geometry = planning.BipedGeometry.FromWalkingModel(walking_model)
+    plan = planning.PlanFootsteps(scenario.BuildTerrain(), scenario.start(), scenario.goal(), oracle, geometry,
+                                  budgeted(scenario.planner()))
+    assert plan.found, plan.reason
+    assert len(plan.steps) > 5
+    assert plan.max_rcof <= 1.0 and plan.min_friction_margin >= 0.0
+    last = plan.StanceAfter(len(plan.steps) - 1)
+    assert abs(last.left.x - 3.0) < 0.15 and abs(last.right.x - 3.0) < 0.15
+    as_dict = plan.to_dict()
+    json.dumps(as_dict)  # plain Python values
+    assert as_dict["found"] and len(as_dict["steps"]) == len(plan.steps)
+    assert as_dict["steps"][0]["side"] in ("left", "right")
+    assert sum(s["energy"] for s in as_dict["steps"]) == pytest.approx(plan.energy, rel=1e-9)
+    copy = pickle.loads(pickle.dumps(plan))
+    assert copy.to_dict() == as_dict
+    refined = planning.RefineFootstepPlan(walking_model, planning.WalkingObjective.kComWorkPlusHeat, copy)
+    assert refined > 0 and copy.found
+
+
+def test_footstep_planner_system_matches_the_function(walking_model, oracle):
+    scenario = planning.FootstepScenario.Load(ICE)
+    geometry = planning.BipedGeometry.FromWalkingModel(walking_model)
+    options = budgeted(scenario.planner())
+    terrain = scenario.BuildTerrain()
+    builder = DiagramBuilder()
+    planner = builder.AddSystem(planning.FootstepPlanner(oracle, geometry, options))
+    for port, value in ((planner.get_terrain_input_port(), terrain), (planner.get_start_input_port(), scenario.start()),
+                        (planner.get_goal_input_port(), scenario.goal())):
+        source = builder.AddSystem(ConstantValueSource(value))
+        builder.Connect(source.get_output_port(0), port)
+    builder.ExportOutput(planner.get_plan_output_port(), "plan")
+    diagram = builder.Build()
+    plan = diagram.GetOutputPort("plan").Eval(diagram.CreateDefaultContext())
+    direct = planning.PlanFootsteps(terrain, scenario.start(), scenario.goal(), oracle, geometry, options)
+    assert plan.found
+    ours = plan.to_dict()
+    theirs = direct.to_dict()
+    for d in (ours, theirs):
+        d.pop("statistics")
+    assert ours == theirs
+
+
+def test_values_and_errors(walking_model, oracle):
+    pose = planning.FootPose(x=1.0, y=2.0, theta=0.5)
+    assert pickle.loads(pickle.dumps(pose)).to_dict() == {"x": 1.0, "y": 2.0, "z": 0.0, "theta": 0.5}
+    goal = pickle.loads(pickle.dumps(planning.StanceGoal(planning.Stance(pose, pose), 0.2)))
+    assert goal.position_tolerance == 0.2 and goal.stance.left.y == 2.0
+    assert planning.to_string(planning.ParseWalkingObjective("time")) == "time"
+    with pytest.raises(ValueError, match="ecom"):
+        planning.ParseWalkingObjective("ecmo")
+    step = oracle.Evaluate(planning.StepDisplacement(dx=0.2, dy=0.2), 1.0)
+    assert step.feasible and step.rcof <= 1.0
+    assert pickle.loads(pickle.dumps(walking_model)).name() == walking_model.name()
+    terrain = planning.TerrainMap(np.array([0.0, 0.0]), 4, 3, 0.5)
+    with pytest.raises(ValueError):
+        terrain.SetCell(0, 0, 0.0, np.array([0.0, 0.0, -1.0]), 1.0)
+    options = planning.FootstepPlannerOptions()
+    options.orientations = 64
+    with pytest.raises(ValueError, match="orientations|32"):
+        planning.PlanFootsteps(terrain, planning.Stance(), planning.StanceGoal(), oracle, planning.BipedGeometry(),
+                               options)
