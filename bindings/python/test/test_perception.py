@@ -262,5 +262,5 @@ def test_stereo_source_reads_a_sequence(tmp_path):
     assert np.abs(image.astype(int) - left).max() <= 1
     np.testing.assert_array_equal(source.get_pose_output_port().Eval(context)[:3, 3], [1.0, 2.0, 3.0])
     assert source.calibration().fx == 100.0
-    with pytest.raises(RuntimeError, match="missing.yaml"):
+    with pytest.raises(ValueError, match="missing.yaml"):
         perception.StereoSource(str(tmp_path / "missing.yaml"), 0.5)
