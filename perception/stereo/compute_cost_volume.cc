@@ -196,7 +196,7 @@ void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const
                                 std::to_string(right_gray.cols) + "x" + std::to_string(right_gray.rows) +
                                 "; pass a rectified pair of equal size");
   }
-  options.Validate(left_gray.cols);
+  options.Validate(left_gray.cols, left_gray.rows);
   cv::Mat left = left_gray;
   cv::Mat right = right_gray;
   if (options.prefilter == Prefilter::kSobel) {

@@ -1,8 +1,11 @@
 #include "cairn/perception/stereo/cost_volume_options.h"
 
+#include <cstdint>
 #include <stdexcept>
+#include <utility>
 
 #include "cairn/common/text_suggestions.h"
+#include "cairn/perception/io/image_file.h"
 
 namespace cairn::perception {
 namespace {
@@ -32,7 +35,7 @@ Prefilter ParsePrefilter(const std::string& name) {
 
 std::string PrefilterName(Prefilter prefilter) { return prefilter == Prefilter::kSobel ? "sobel" : "none"; }
 
-void CostVolumeOptions::Validate(int image_width) const {
+void CostVolumeOptions::Validate(int image_width, int image_height) const {
   if (window < 1 || window % 2 == 0) {
     throw std::invalid_argument("stereo window " + std::to_string(window) +
                                 " must be odd and positive (the pixel sits at its centre); use e.g. " +
@@ -46,15 +49,30 @@ void CostVolumeOptions::Validate(int image_width) const {
                                 std::to_string(max_window) + ", beyond which " + CostFunctionName(cost) +
                                 " window sums overflow; use a smaller window");
   }
+  for (const auto& [side, name] : {std::pair<int, const char*>{image_width, "wide"}, {image_height, "tall"}}) {
+    if (side != kUnknownImageSize && window > side) {
+      throw std::invalid_argument("stereo window " + std::to_string(window) + " is larger than the image, which is " +
+                                  std::to_string(side) + " px " + name + "; use a window of at most " +
+                                  std::to_string(side % 2 == 1 ? side : side - 1));
+    }
+  }
   if (max_disparity < min_disparity) {
     throw std::invalid_argument("max disparity " + std::to_string(max_disparity) + " is below min disparity " +
                                 std::to_string(min_disparity) + "; swap them");
   }
-  if (max_disparity >= image_width || -min_disparity >= image_width) {
+  // In 64 bits: -min_disparity overflows for the smallest int.
+  if (image_width != kUnknownImageSize &&
+      (max_disparity >= image_width || -static_cast<std::int64_t>(min_disparity) >= image_width)) {
     throw std::invalid_argument("disparity range [" + std::to_string(min_disparity) + ", " +
                                 std::to_string(max_disparity) + "] is wider than the image (" +
                                 std::to_string(image_width) + " px); use a max disparity below " +
                                 std::to_string(image_width));
+  }
+  // Without a width, the range is bounded by the largest image a file may hold (kMaxImagePixels on one row).
+  if (static_cast<std::int64_t>(max_disparity) - min_disparity + 1 > kMaxImagePixels) {
+    throw std::invalid_argument("disparity range [" + std::to_string(min_disparity) + ", " +
+                                std::to_string(max_disparity) + "] has more than " +
+                                std::to_string(kMaxImagePixels) + " disparities; no image is that wide");
   }
   if (prefilter == Prefilter::kSobel) {
     if (prefilter_size != 3 && prefilter_size != 5 && prefilter_size != 7 && prefilter_size != 9) {

@@ -1,6 +1,7 @@
 #include "cairn/perception/stereo/disparity_volume.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +21,15 @@ void DisparityVolume::Resize(int height, int width, int min_disparity, int max_d
     throw std::invalid_argument("DisparityVolume: max_disparity " + std::to_string(max_disparity) +
                                 " is below min_disparity " + std::to_string(min_disparity) +
                                 "; swap them or widen the range");
+  }
+  // In 64 bits: the range of two ints, and the element count, overflow int.
+  const std::int64_t disparities = static_cast<std::int64_t>(max_disparity) - min_disparity + 1;
+  const std::int64_t values = static_cast<std::int64_t>(height) * width * disparities;
+  if (values > kMaxValues) {
+    throw std::invalid_argument("DisparityVolume: " + std::to_string(width) + "x" + std::to_string(height) +
+                                " pixels x " + std::to_string(disparities) + " disparities are " +
+                                std::to_string(values) + " values, more than the " + std::to_string(kMaxValues) +
+                                " (4 GiB) a volume may hold; narrow the disparity range or downscale the images");
   }
   height_ = height;
   width_ = width;

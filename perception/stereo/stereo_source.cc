@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 #include <yaml-cpp/yaml.h>
+
+#include "cairn/perception/io/image_file.h"
 
 namespace cairn::perception {
 
@@ -23,13 +27,35 @@ YAML::Node Require(const YAML::Node& node, const std::string& key, const std::st
   return child;
 }
 
-cv::Mat ReadGrey(const std::string& path, const std::string& file) {
-  cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
-  if (image.empty()) {
-    throw std::runtime_error("StereoSource: '" + file + "' names image '" + path +
-                             "', which cannot be read; paths are relative to the YAML file's folder");
+// Every frame holds two grey images in memory for the source's lifetime: bound them all, not only each one.
+constexpr std::int64_t kMaxTotalPixels = std::int64_t{1} << 30;
+constexpr int kMaxFrames = 100000;
+
+cv::Mat ReadGrey(const std::string& path, const std::string& file, std::int64_t* pixel_budget) {
+  try {
+    cv::Mat image = ReadImageFile(path, cv::IMREAD_GRAYSCALE, std::min(kMaxImagePixels, *pixel_budget));
+    *pixel_budget -= static_cast<std::int64_t>(image.total());
+    return image;
+  } catch (const std::exception& error) {
+    const bool budget = *pixel_budget < kMaxImagePixels && dynamic_cast<const std::invalid_argument*>(&error);
+    throw std::runtime_error("StereoSource: '" + file + "' names image '" + path + "', which cannot be read (" +
+                             error.what() + ")" +
+                             (budget ? "; a source holds at most " + std::to_string(kMaxTotalPixels) +
+                                           " pixels in all its images"
+                                     : std::string("; paths are relative to the YAML file's folder")));
   }
-  return image;
+}
+
+std::vector<double> FiniteNumbers(const YAML::Node& node, const std::string& key, const std::string& where,
+                                  const std::string& file) {
+  const auto values = node.as<std::vector<double>>();
+  for (double v : values) {
+    if (!std::isfinite(v)) {
+      throw std::runtime_error("StereoSource: '" + file + "' line " + std::to_string(node.Mark().line + 1) + ": " +
+                               where + " has a non-finite value in '" + key + "'");
+    }
+  }
+  return values;
 }
 
 }  // namespace
@@ -56,20 +82,27 @@ StereoSource::StereoSource(const std::string& yaml_path, double period) : period
     if (!frames.IsSequence() || frames.size() == 0) {
       throw std::runtime_error("StereoSource: '" + yaml_path + "': 'frames' must be a non-empty list of frames");
     }
+    if (frames.size() > static_cast<std::size_t>(kMaxFrames)) {
+      throw std::runtime_error("StereoSource: '" + yaml_path + "': 'frames' lists " + std::to_string(frames.size()) +
+                               " frames, more than the " + std::to_string(kMaxFrames) + " a source may hold");
+    }
     const std::string folder = FolderOf(yaml_path);
+    std::int64_t pixel_budget = kMaxTotalPixels;
     for (std::size_t k = 0; k < frames.size(); ++k) {
       const YAML::Node f = frames[k];
       const std::string where = "frame " + std::to_string(k);
-      left_.push_back(ReadGrey(folder + Require(f, "left", where, yaml_path).as<std::string>(), yaml_path));
-      right_.push_back(ReadGrey(folder + Require(f, "right", where, yaml_path).as<std::string>(), yaml_path));
+      left_.push_back(
+          ReadGrey(folder + Require(f, "left", where, yaml_path).as<std::string>(), yaml_path, &pixel_budget));
+      right_.push_back(
+          ReadGrey(folder + Require(f, "right", where, yaml_path).as<std::string>(), yaml_path, &pixel_budget));
       if (left_.back().size() != right_.back().size()) {
         throw std::runtime_error("StereoSource: '" + yaml_path + "': " + where + " has left " +
                                  std::to_string(left_.back().cols) + "x" + std::to_string(left_.back().rows) +
                                  " but right " + std::to_string(right_.back().cols) + "x" +
                                  std::to_string(right_.back().rows) + "; give a rectified pair of equal size");
       }
-      const auto t = Require(f, "translation", where, yaml_path).as<std::vector<double>>();
-      const auto q = Require(f, "rotation_wxyz", where, yaml_path).as<std::vector<double>>();
+      const auto t = FiniteNumbers(Require(f, "translation", where, yaml_path), "translation", where, yaml_path);
+      const auto q = FiniteNumbers(Require(f, "rotation_wxyz", where, yaml_path), "rotation_wxyz", where, yaml_path);
       if (t.size() != 3 || q.size() != 4) {
         throw std::runtime_error("StereoSource: '" + yaml_path + "': " + where +
                                  " needs translation [x, y, z] and rotation_wxyz [w, x, y, z]");
