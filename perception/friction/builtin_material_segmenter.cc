@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "cairn/common/atomic_file.h"
+#include "cairn/common/number_text.h"
 
 namespace cairn::perception {
 namespace {
@@ -25,7 +26,8 @@ struct Samples {
   std::vector<int> y;
 };
 
-void ValidateTrainingSet(int num_labels, const std::vector<cv::Mat>& images, const std::vector<cv::Mat>& labels) {
+void ValidateTrainingSet(int num_labels, int window, const std::vector<cv::Mat>& images,
+                         const std::vector<cv::Mat>& labels) {
   if (images.size() != labels.size()) {
     throw std::invalid_argument("BuiltinMaterialSegmenter::Train: " + std::to_string(images.size()) +
                                 " images but " + std::to_string(labels.size()) +
@@ -42,6 +44,12 @@ void ValidateTrainingSet(int num_labels, const std::vector<cv::Mat>& images, con
                                   " must be a non-empty 8-bit image with 1 or 3 channels; got depth " +
                                   std::to_string(image.depth()) + " with " + std::to_string(image.channels()) +
                                   " channel(s).");
+    }
+    if (image.cols < window || image.rows < window) {
+      throw std::invalid_argument("BuiltinMaterialSegmenter::Train: image " + std::to_string(i) + " is " +
+                                  std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                                  " pixels, smaller than the " + std::to_string(window) + "x" +
+                                  std::to_string(window) + " patch window; use larger images or a smaller window.");
     }
     const cv::Mat& label = labels[i];
     if (label.type() != CV_8UC1 || label.size() != image.size()) {
@@ -349,14 +357,20 @@ BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Train(const std::vector<std::
                                 std::to_string(options.epochs) + ", " + std::to_string(options.max_samples_per_label) +
                                 ".");
   }
-  if (!(options.learning_rate > 0.0) || !(options.weight_decay >= 0.0)) {
-    throw std::invalid_argument("BuiltinMaterialSegmenter::Train: learning_rate must be > 0 and weight_decay >= 0; "
-                                "got " + std::to_string(options.learning_rate) + " and " +
-                                std::to_string(options.weight_decay) + ".");
+  if (options.hidden_units > kMaxHiddenUnits) {
+    throw std::invalid_argument("BuiltinMaterialSegmenter::Train: hidden_units " +
+                                std::to_string(options.hidden_units) + " is more than the " +
+                                std::to_string(kMaxHiddenUnits) + " a model may have; try 48.");
+  }
+  if (!(options.learning_rate > 0.0) || !(options.weight_decay >= 0.0) || !std::isfinite(options.learning_rate) ||
+      !std::isfinite(options.weight_decay)) {
+    throw std::invalid_argument("BuiltinMaterialSegmenter::Train: learning_rate must be finite and > 0 and "
+                                "weight_decay finite and >= 0; got " + FormatShort(options.learning_rate) + " and " +
+                                FormatShort(options.weight_decay) + ".");
   }
   if (!(options.calibration_fraction > 0.0 && options.calibration_fraction < 1.0)) {
     throw std::invalid_argument("BuiltinMaterialSegmenter::Train: calibration_fraction must be in (0, 1); got " +
-                                std::to_string(options.calibration_fraction) + ". Try 0.25.");
+                                FormatShort(options.calibration_fraction) + ". Try 0.25.");
   }
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (std::find(labels.begin(), labels.begin() + static_cast<std::ptrdiff_t>(i), labels[i]) !=
@@ -366,8 +380,8 @@ BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Train(const std::vector<std::
     }
   }
   const int num_labels = static_cast<int>(labels.size());
-  ValidateTrainingSet(num_labels, images, label_images);
   const MaterialFeatures features(options.window, options.stride);
+  ValidateTrainingSet(num_labels, options.window, images, label_images);
   const std::size_t num_calibration = std::clamp<std::size_t>(
       static_cast<std::size_t>(std::lround(options.calibration_fraction * static_cast<double>(images.size()))), 1,
       images.size() - 1);
@@ -474,17 +488,23 @@ BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Load(const std::string& path)
                         std::to_string(kVersion) + ".");
     }
     const auto labels = Require(root, "labels", path).as<std::vector<std::string>>();
+    if (labels.empty() || labels.size() > 255) {
+      Corrupt(path, "has " + std::to_string(labels.size()) + " labels; a model has 1 to 255.");
+    }
     const int window = Require(root, "window", path).as<int>();
     const int stride = Require(root, "stride", path).as<int>();
     const double temperature = Require(root, "temperature", path).as<double>();
     if (!(temperature > 0.0) || !std::isfinite(temperature)) {
-      Corrupt(path, "has temperature " + std::to_string(temperature) + "; it must be positive.");
+      Corrupt(path, "has temperature " + FormatShort(temperature) + "; it must be positive and finite.");
     }
     const Eigen::Index d = MaterialFeatures::kDimension;
     const Eigen::Index n = static_cast<Eigen::Index>(labels.size());
     const YAML::Node b1_node = Require(root, "b1", path);
     const Eigen::Index h = b1_node["cols"] ? b1_node["cols"].as<Eigen::Index>() : 0;
-    if (h < 1) Corrupt(path, "has a malformed 'b1' (no positive 'cols').");
+    if (h < 1 || h > kMaxHiddenUnits) {
+      Corrupt(path, "has a malformed 'b1': " + std::to_string(h) + " hidden units, outside [1, " +
+                        std::to_string(kMaxHiddenUnits) + "].");
+    }
     const Eigen::VectorXf mean = ReadMatrix(root, "feature_mean", path, 1, d).transpose();
     const Eigen::VectorXf inverse_scale = ReadMatrix(root, "feature_inverse_scale", path, 1, d).transpose();
     Eigen::MatrixXf w1 = ReadMatrix(root, "w1", path, h, d);

@@ -73,13 +73,13 @@ void BgrToLab(const cv::Mat& bgr, std::vector<cv::Mat>* lab) {
 }  // namespace
 
 MaterialFeatures::MaterialFeatures(int window, int stride) : window_(window), stride_(stride) {
-  if (window < 3 || window % 2 == 0) {
-    throw std::invalid_argument("MaterialFeatures: the window must be odd and >= 3 pixels; got " +
-                                std::to_string(window) + ". Try 15.");
+  if (window < 3 || window % 2 == 0 || window > kMaxWindow) {
+    throw std::invalid_argument("MaterialFeatures: the window must be odd and in [3, " + std::to_string(kMaxWindow) +
+                                "] pixels; got " + std::to_string(window) + ". Try 15.");
   }
-  if (stride < 1) {
-    throw std::invalid_argument("MaterialFeatures: the stride must be >= 1 pixel; got " + std::to_string(stride) +
-                                ". Try 8.");
+  if (stride < 1 || stride > kMaxStride) {
+    throw std::invalid_argument("MaterialFeatures: the stride must be in [1, " + std::to_string(kMaxStride) +
+                                "] pixels; got " + std::to_string(stride) + ". Try 8.");
   }
 }
 
@@ -95,6 +95,12 @@ cv::Mat MaterialFeatures::Compute(const cv::Mat& image) const {
                                 std::to_string(image.rows) + "x" + std::to_string(image.cols) + " with depth " +
                                 std::to_string(image.depth()) + " and " + std::to_string(image.channels()) +
                                 " channel(s).");
+  }
+  if (image.cols < window_ || image.rows < window_) {
+    throw std::invalid_argument("Material segmentation: the image is " + std::to_string(image.cols) + "x" +
+                                std::to_string(image.rows) + " pixels, smaller than the segmenter's " +
+                                std::to_string(window_) + "x" + std::to_string(window_) +
+                                " patch window; give an image at least that large or a model with a smaller window.");
   }
   cv::Mat bgr;
   if (image.channels() == 1) {

@@ -15,6 +15,10 @@
 namespace cairn::perception {
 namespace {
 
+// Bounds on what a registry file may state.
+constexpr int kMaxMaterials = 1000;
+constexpr double kMaxContacts = 1e9;
+
 // The posterior of μ ~ N(m, s²) after one observation, and the observation's likelihood under N(m, s²).
 struct Posterior {
   double mean;
@@ -124,11 +128,14 @@ void MaterialRegistry::ValidateProbabilities(const Eigen::Ref<const Eigen::Vecto
 Eigen::VectorXd MaterialRegistry::UpdateFromContact(const Eigen::Ref<const Eigen::VectorXd>& probabilities,
                                                     const ContactObservation& observation) {
   ValidateProbabilities(probabilities);
-  if (!std::isfinite(observation.value) ||
-      (observation.kind == ContactObservation::Kind::kMeasured && !(observation.stddev > 0.0))) {
-    throw std::invalid_argument("UpdateFromContact: the observation needs a finite value (got " +
-                                FormatShort(observation.value) + ") and, when measured, a noise stddev > 0 (got " +
-                                FormatShort(observation.stddev) + ").");
+  if (!(observation.value >= 0.0 && observation.value <= kMaxFrictionCoefficient) ||
+      (observation.kind == ContactObservation::Kind::kMeasured &&
+       !(observation.stddev > 0.0 && observation.stddev <= kMaxFrictionCoefficient))) {
+    throw std::invalid_argument("UpdateFromContact: the observation needs a value in [0, " +
+                                FormatShort(kMaxFrictionCoefficient) + "] (got " + FormatShort(observation.value) +
+                                ") and, when measured, a noise stddev in (0, " +
+                                FormatShort(kMaxFrictionCoefficient) + "] (got " + FormatShort(observation.stddev) +
+                                ").");
   }
   const int n = size();
   std::vector<Posterior> posteriors(n, Posterior{0.0, 0.0, 0.0});
@@ -224,6 +231,10 @@ MaterialRegistry MaterialRegistry::LoadYaml(const std::string& path) {
       throw fail(value, std::string("key '") + key + "' must be a number; got '" + value.as<std::string>() + "'.");
     }
   };
+  if (list.size() > static_cast<std::size_t>(kMaxMaterials)) {
+    throw fail(list, "'materials' lists " + std::to_string(list.size()) + " materials; a registry holds at most " +
+                         std::to_string(kMaxMaterials) + ".");
+  }
   std::vector<Material> materials;
   for (const YAML::Node& entry : list) {
     if (!entry.IsMap() || !entry["label"]) throw fail(entry, "each material needs a 'label'.");
@@ -242,7 +253,15 @@ MaterialRegistry MaterialRegistry::LoadYaml(const std::string& path) {
         throw fail(entry["distribution"], "unknown distribution '" + kind + "' for material '" + label +
                                               "'; use normal, truncated_normal, gev or not_walkable.");
       }
-      if (entry["contacts"]) material.num_contacts = entry["contacts"].as<int>();
+      CheckPhysicalFriction(material.friction);
+      if (entry["contacts"]) {
+        const double contacts = number(entry, "contacts");
+        if (!(contacts >= 0.0 && contacts <= kMaxContacts) || contacts != std::floor(contacts)) {
+          throw fail(entry["contacts"], "material '" + label + "': 'contacts' must be an integer in [0, " +
+                                            FormatShort(kMaxContacts) + "]; got " + FormatShort(contacts) + ".");
+        }
+        material.num_contacts = static_cast<int>(contacts);
+      }
       materials.push_back(std::move(material));
     } catch (const std::invalid_argument& error) {
       const std::string message = error.what();

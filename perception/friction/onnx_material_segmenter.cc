@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <mutex>
 #include <stdexcept>
@@ -10,6 +11,9 @@
 #include <opencv2/dnn.hpp>
 #include <opencv2/imgproc.hpp>
 #include <yaml-cpp/yaml.h>
+
+#include "cairn/common/number_text.h"
+#include "cairn/perception/io/image_file.h"
 
 namespace cairn::perception {
 
@@ -77,9 +81,11 @@ OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) 
     }
     pre.width = input["width"] ? input["width"].as<int>() : 0;
     pre.height = input["height"] ? input["height"].as<int>() : 0;
-    if (pre.width <= 0 || pre.height <= 0) {
-      BadKey(yaml_path, "input.width/height", "must be positive integers; got " + std::to_string(pre.width) + "x" +
-                                                  std::to_string(pre.height) + ".");
+    if (pre.width <= 0 || pre.height <= 0 ||
+        static_cast<std::int64_t>(pre.width) * pre.height > kMaxImagePixels) {
+      BadKey(yaml_path, "input.width/height", "must be positive integers with at most " +
+                                                  std::to_string(kMaxImagePixels) + " pixels in all; got " +
+                                                  std::to_string(pre.width) + "x" + std::to_string(pre.height) + ".");
     }
     const std::string order = input["channel_order"] ? input["channel_order"].as<std::string>() : "";
     if (order != "rgb" && order != "bgr") {
@@ -92,11 +98,14 @@ OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) 
         BadKey(yaml_path, "input.mean", "must have 3 values (one per channel); got " + std::to_string(mean.size()) +
                                             ".");
       }
+      for (double m : mean) {
+        if (!std::isfinite(m)) BadKey(yaml_path, "input.mean", "must hold finite numbers; got " + FormatShort(m) + ".");
+      }
       pre.mean = Eigen::Vector3d(mean[0], mean[1], mean[2]);
     }
     pre.scale = input["scale"] ? input["scale"].as<double>() : 1.0;
     if (!(pre.scale > 0.0) || !std::isfinite(pre.scale)) {
-      BadKey(yaml_path, "input.scale", "must be positive; got " + std::to_string(pre.scale) + ".");
+      BadKey(yaml_path, "input.scale", "must be positive and finite; got " + FormatShort(pre.scale) + ".");
     }
   } catch (const YAML::Exception& error) {
     throw std::invalid_argument("OnnxMaterialSegmenter: '" + yaml_path + "' has a value of the wrong type (line " +
@@ -111,9 +120,11 @@ OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) 
   auto network = std::make_shared<Network>();
   try {
     network->net = cv::dnn::readNetFromONNX(model_path);
-  } catch (const cv::Exception& error) {
-    throw std::runtime_error("OnnxMaterialSegmenter: OpenCV cannot read the ONNX model '" + model_path +
-                             "': " + error.msg);
+  } catch (const cv::Exception&) {
+    // OpenCV's text spans lines and names its own sources; the user needs the file and what to check.
+    throw std::runtime_error("OnnxMaterialSegmenter: the model file '" + model_path + "' named by '" + yaml_path +
+                             "' is not an ONNX network OpenCV can read (corrupt, truncated or using unsupported "
+                             "operators).");
   }
   if (network->net.empty()) {
     throw std::runtime_error("OnnxMaterialSegmenter: the ONNX model '" + model_path + "' has no layers.");
@@ -124,10 +135,10 @@ OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) 
   cv::Mat output;
   try {
     output = Forward(&network->net, &network->mutex, pre, cv::Mat(pre.height, pre.width, CV_8UC3, cv::Scalar::all(128)));
-  } catch (const cv::Exception& error) {
+  } catch (const cv::Exception&) {
     throw std::runtime_error("OnnxMaterialSegmenter: the model '" + model_path + "' fails on a " +
                              std::to_string(pre.width) + "x" + std::to_string(pre.height) +
-                             " input (check input.width/height): " + error.msg);
+                             " input; check input.width/height in '" + yaml_path + "' against the network's input.");
   }
   if (output.dims != 4 || output.size[0] != 1) {
     throw std::invalid_argument("OnnxMaterialSegmenter: the model '" + model_path +
@@ -155,7 +166,13 @@ cv::Mat OnnxMaterialSegmenter::SegmentNative(const cv::Mat& image) const {
   } else {
     bgr = image;
   }
-  const cv::Mat output = Forward(&network_->net, &network_->mutex, preprocessing_, bgr);
+  cv::Mat output;
+  try {
+    output = Forward(&network_->net, &network_->mutex, preprocessing_, bgr);
+  } catch (const cv::Exception&) {
+    throw std::runtime_error("OnnxMaterialSegmenter: the model '" + model_path_ + "' failed on a " +
+                             std::to_string(image.cols) + "x" + std::to_string(image.rows) + " image.");
+  }
   const int n = output.size[1];
   const int rows = output.size[2];
   const int cols = output.size[3];
