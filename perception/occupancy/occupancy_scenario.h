@@ -19,6 +19,24 @@ namespace cairn::perception {
 /// gives the built-in scene of thesis Figs. 4.7/4.8; FromYaml() reads one from a file whose schema is documented
 /// in docs/occupancy_scenarios.md.
 struct OccupancyScenario {
+  /// Limits on what a scenario file may state, each checked before anything is allocated from it: frames of an
+  /// orbit or poses listed (10000, 1.3 MB of poses; a rendered frame takes ~10 ms at VGA), objects (1000: every
+  /// pixel ray meets every object), named textures, an image side (8192 px, kMaxImagePixels), a label, the noise
+  /// variance (255^2), and the magnitude of a coordinate, length or angle (1e4).
+  static constexpr int kMaxFrames = 10000;
+  /// See kMaxFrames.
+  static constexpr int kMaxObjects = 1000;
+  /// See kMaxFrames.
+  static constexpr int kMaxTextures = 1000;
+  /// See kMaxFrames.
+  static constexpr int kMaxImageSide = 8192;
+  /// See kMaxFrames.
+  static constexpr int kMaxLabel = 65535;
+  /// See kMaxFrames.
+  static constexpr double kMaxNoiseVariance = 255.0 * 255.0;
+  /// See kMaxFrames.
+  static constexpr double kMaxCoordinate = 1e4;
+
   /// The scene (textured planes and boxes, each with a material label).
   SyntheticStereoScene scene;
   /// The rectified stereo camera.
@@ -46,7 +64,8 @@ struct OccupancyScenario {
 
   /// Reads a scenario from a YAML file (schema: docs/occupancy_scenarios.md). Throws std::runtime_error naming
   /// the file, the offending key (e.g. `objects[2].half_extents`) and its line for a missing, unknown, mistyped
-  /// or out-of-range entry, and for a file that cannot be read or parsed.
+  /// or out-of-range entry (the limits above; seeds in [0, 2^32 - 1]), and for a file that cannot be read or
+  /// parsed.
   static OccupancyScenario FromYaml(const std::string& path);
 
   /// The camera pose at `position` looking at `target` with the world's +z up in the image (the image's y axis

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
 
+#include "cairn/common/number_text.h"
 #include "cairn/perception/internal/parallel_rows.h"
+#include "cairn/perception/io/image_file.h"
 
 namespace cairn::perception {
 
@@ -15,13 +18,14 @@ SyntheticStereoRenderer::SyntheticStereoRenderer(const StereoCalibration& calibr
                                                  double noise_variance, std::uint32_t seed)
     : calibration_(calibration), width_(width), height_(height), noise_variance_(noise_variance), seed_(seed) {
   calibration.Validate();
-  if (width <= 0 || height <= 0) {
+  if (width <= 0 || height <= 0 || static_cast<std::int64_t>(width) * height > kMaxImagePixels) {
     throw std::invalid_argument("SyntheticStereoRenderer: image size " + std::to_string(width) + "x" +
-                                std::to_string(height) + " must be positive");
+                                std::to_string(height) + " must be positive with at most " +
+                                std::to_string(kMaxImagePixels) + " pixels");
   }
-  if (!(noise_variance >= 0.0)) {
-    throw std::invalid_argument("SyntheticStereoRenderer: noise variance " + std::to_string(noise_variance) +
-                                " is negative; use 0 for noise-free images");
+  if (!(noise_variance >= 0.0) || !std::isfinite(noise_variance)) {
+    throw std::invalid_argument("SyntheticStereoRenderer: noise variance " + FormatShort(noise_variance) +
+                                " must be finite and >= 0; use 0 for noise-free images");
   }
 }
 
