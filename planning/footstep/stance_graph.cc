@@ -6,8 +6,10 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include <cairn/planning/footstep/internal/yaw_box.h>
+#include <cairn/planning/footstep/time_limit_reached.h>
 
 namespace cairn::planning {
 namespace {
@@ -37,8 +39,13 @@ StanceGraph::LatticeFoot UnpackFoot(std::uint64_t bits) {
 }  // namespace
 
 StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_model, const BipedGeometry& geometry,
-                         const FootstepPlannerOptions& options, const StanceGoal& goal)
-    : terrain_(terrain), cost_model_(cost_model), geometry_(geometry), options_(options), goal_(goal) {
+                         const FootstepPlannerOptions& options, const StanceGoal& goal, Clock::time_point deadline)
+    : terrain_(terrain),
+      cost_model_(cost_model),
+      geometry_(geometry),
+      options_(options),
+      goal_(goal),
+      deadline_(deadline) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("StanceGraph: " + what); };
   if (!(options.lattice_resolution > 0.0) || !std::isfinite(options.lattice_resolution)) {
     fail("lattice_resolution must be a positive length, got " + std::to_string(options.lattice_resolution));
@@ -97,6 +104,14 @@ StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_mo
   if (!(min_cost_per_metre_ >= 0.0) || !std::isfinite(min_cost_per_metre_)) {
     fail("the step cost model's min_cost_per_metre() must be finite and >= 0, got " +
          std::to_string(min_cost_per_metre_));
+  }
+}
+
+void StanceGraph::CheckDeadline(const char* what) const {
+  if (deadline_ != Clock::time_point::max() && Clock::now() >= deadline_) {
+    throw TimeLimitReached(std::string("the time limit ran out while ") + what + " (" +
+                           std::to_string(lattice_cols_) + " x " + std::to_string(lattice_rows_) +
+                           " lattice positions, " + std::to_string(terrain_.obstacles().size()) + " obstacles)");
   }
 }
 
@@ -321,6 +336,7 @@ void StanceGraph::ComputeChainDistances() {
   std::vector<double> ground(n, 0.0);  // a foothold's height does not depend on its yaw
   std::vector<float> friction(n, 0.0f);
   for (int iy = 0; iy < lattice_rows_; ++iy) {
+    CheckDeadline("evaluating the footholds of the heuristic");
     for (int ix = 0; ix < lattice_cols_; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * lattice_cols_ + ix;
       for (int it = 0; it < options_.orientations; ++it) {
@@ -406,10 +422,12 @@ void StanceGraph::RelaxedDistances(const std::vector<char>& usable, double max_l
         }
       }
     }
+    std::size_t pops = 0;
     while (!queue.empty()) {
       const auto [d, i] = queue.top();
       queue.pop();
       if (d > dist[i]) continue;
+      if ((++pops & 255) == 0) CheckDeadline("computing the heuristic's distances to the goal");
       const int ix = static_cast<int>(i % lattice_cols_), iy = static_cast<int>(i / lattice_cols_);
       const Eigen::Vector2d pi = Position(LatticeFoot{ix, iy, 0});
       for (std::size_t k = 0; k < offsets.size(); ++k) {
