@@ -9,11 +9,13 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <mutex>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "cairn/common/number_text.h"
@@ -540,7 +542,8 @@ TransitionOracle TransitionOracle::LoadOrBuild(const std::string& path, const Wa
                                                const OracleBuildOptions& options, std::ostream* log) {
   grid.Validate(model.reach());
   std::string reason;
-  if (std::filesystem::exists(path)) {
+  std::error_code exists_error;
+  if (std::filesystem::exists(path, exists_error)) {
     try {
       TransitionOracle oracle = Load(path, model, objective, grid);
       if (log != nullptr) *log << "Loaded transition oracle " << path << " (" << oracle.num_entries() << " entries)\n";
@@ -558,7 +561,27 @@ TransitionOracle TransitionOracle::LoadOrBuild(const std::string& path, const Wa
     }
   }
   TransitionOracle oracle = Build(model, objective, grid, options);
-  oracle.Save(path);
+  // The cache is an optimisation: a folder that cannot be created or written costs the next run a rebuild, not
+  // this run its table.
+  std::string problem;
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::error_code folder_error;
+  if (!folder.empty()) std::filesystem::create_directories(folder, folder_error);
+  if (folder_error) {
+    problem = "cannot create the folder '" + folder.string() + "' (" + folder_error.message() + ")";
+  } else {
+    try {
+      oracle.Save(path);
+    } catch (const std::exception& error) {
+      problem = error.what();
+    }
+  }
+  if (!problem.empty()) {
+    std::ostream& warning = log != nullptr ? *log : std::cerr;
+    warning << "Warning: the transition oracle is not cached: " << problem
+            << "; continuing with the table in memory (it will be built again next time; choose a writable cache "
+               "folder to keep it)\n";
+  }
   return oracle;
 }
 

@@ -55,7 +55,7 @@ class WalkingModel {
   /// (the message gives the range the legs allow).
   static WalkingModel Load(const std::string& yaml_path);
 
-  /// Robot name (the YAML's `name`).
+  /// Robot name (the YAML's `name`: 1 to 64 letters, digits, '_', '-' or '.', since it names cache files).
   const std::string& name() const;
   /// Total mass from the multibody model, kg.
   double mass() const;

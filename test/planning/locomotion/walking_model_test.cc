@@ -134,6 +134,11 @@ TEST(WalkingModelTest, ErrorsNameTheFileAndKey) {
                            std::runtime_error, "not valid YAML");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("  crouch: 0.20", "")), std::runtime_error,
                            "body_box");
+  // The name becomes a cache file's name: no folders, no line breaks.
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("name: cairn_humanoid", "name: ../../etc/robot")),
+                           std::runtime_error, "key 'name'", "letters, digits", "'../../etc/robot'");
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("resistance: 0.299", "resistance: .nan")),
+                           std::runtime_error, "motors.hip_yaw.resistance", "finite");
 }
 
 }  // namespace
