@@ -31,6 +31,10 @@ SyntheticStereoRenderer::SyntheticStereoRenderer(const StereoCalibration& calibr
 
 SyntheticStereoFrame SyntheticStereoRenderer::Render(const SyntheticStereoScene& scene, const Eigen::Isometry3d& X_WC,
                                                      int frame_index) const {
+  if (frame_index < 0) {
+    throw std::invalid_argument("SyntheticStereoRenderer::Render: frame index " + std::to_string(frame_index) +
+                                " is negative; frames are numbered from 0 (it selects the noise realisation)");
+  }
   SyntheticStereoFrame frame;
   frame.X_WC = X_WC;
   frame.depth.create(height_, width_, CV_32FC1);

@@ -45,7 +45,8 @@ class SyntheticStereoRenderer {
   SyntheticStereoRenderer(const StereoCalibration& calibration, int width, int height, double noise_variance = 0.0,
                           std::uint32_t seed = 1);
 
-  /// Renders the pair seen from left-camera pose X_WC; `frame_index` selects the noise realisation.
+  /// Renders the pair seen from left-camera pose X_WC; `frame_index` (>= 0, else std::invalid_argument) selects the
+  /// noise realisation.
   SyntheticStereoFrame Render(const SyntheticStereoScene& scene, const Eigen::Isometry3d& X_WC,
                               int frame_index = 0) const;
 
