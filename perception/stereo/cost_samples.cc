@@ -10,11 +10,14 @@ namespace cairn::perception {
 
 std::size_t CollectConsistentWtaCosts(const DisparityVolume& costs, const WtaResult& wta, std::vector<float>* samples) {
   CAIRN_CHECK(samples != nullptr);
-  if (wta.best_cost.rows != costs.height() || wta.best_cost.cols != costs.width()) {
+  if (wta.best_cost.rows != costs.height() || wta.best_cost.cols != costs.width() ||
+      wta.best_cost.type() != CV_32FC1 || wta.lr_consistent.size() != wta.best_cost.size() ||
+      wta.lr_consistent.type() != CV_8UC1) {
     throw std::invalid_argument("CollectConsistentWtaCosts: the winner-take-all result is " +
                                 std::to_string(wta.best_cost.cols) + "x" + std::to_string(wta.best_cost.rows) +
                                 " but the cost volume is " + std::to_string(costs.width()) + "x" +
-                                std::to_string(costs.height()) + "; compute both from the same pair");
+                                std::to_string(costs.height()) +
+                                " (or lacks its cost or left-right matrices); compute both from the same pair");
   }
   const std::size_t before = samples->size();
   for (int y = 0; y < costs.height(); ++y) {
@@ -44,7 +47,7 @@ std::size_t CollectGroundTruthCosts(const DisparityVolume& costs, const cv::Mat&
   for (int y = 0; y < costs.height(); ++y) {
     const float* gt = ground_truth.ptr<float>(y);
     for (int x = 0; x < costs.width(); ++x) {
-      if (!(gt[x] > 0.0f) || (!mask.empty() && mask.at<uint8_t>(y, x) == 0)) continue;
+      if (!(gt[x] > 0.0f) || !std::isfinite(gt[x]) || (!mask.empty() && mask.at<uint8_t>(y, x) == 0)) continue;
       const int k = static_cast<int>(std::lround(gt[x])) - costs.min_disparity();
       if (k < 0 || k >= costs.num_disparities()) continue;
       const float value = costs.at(y, x, k);
