@@ -417,7 +417,16 @@ FrictionQuantileImage::FrictionQuantileImage(const MaterialRegistry& registry, c
   double high = 0.0;
   for (const auto& material : registry.materials()) high = std::max(high, material.friction.Quantile(target));
   step_ = options.method == QuantileMethod::kExact ? kExactStep : options.tolerance;
-  num_points_ = static_cast<int>(std::ceil(high / step_)) + 2;
+  // Counted in double first: a tiny tolerance or a huge quantile must give this message, not an overflowing cast
+  // and a table of gigabytes.
+  const double points = std::ceil(high / step_) + 2.0;
+  if (!(points <= kMaxTablePoints)) {
+    throw std::invalid_argument("FrictionQuantileImage: a table up to the largest label quantile " + FormatShort(high) +
+                                " in steps of " + FormatShort(step_) + " needs " + FormatShort(points) +
+                                " points, more than the " + FormatShort(kMaxTablePoints) +
+                                " supported; raise the tolerance");
+  }
+  num_points_ = static_cast<int>(points);
   table_.assign(static_cast<std::size_t>(num_points_) * blocks_, Block{});
   for (int j = 0; j < num_points_; ++j) {
     for (int i = 0; i < num_labels_; ++i) {
