@@ -14,9 +14,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include <cairn/planning/footstep/footstep_scenario.h>
 #include <cairn/planning/footstep/plan_footsteps.h>
 #include <cairn/planning/locomotion/transition_oracle.h>
+#include <cairn/planning/scenarios/footstep_scenario.h>
 
 namespace {
 

@@ -10,9 +10,9 @@
 
 #include "cairn/perception/friction/builtin_material_segmenter.h"
 #include "cairn/perception/friction/material_features.h"
-#include "cairn/perception/friction/material_scene.h"
-#include "cairn/perception/friction/material_texture.h"
 #include "cairn/perception/friction/onnx_material_segmenter.h"
+#include "cairn/perception/synthetic/material_scene.h"
+#include "cairn/perception/synthetic/material_texture.h"
 
 namespace {
 

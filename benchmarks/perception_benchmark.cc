@@ -12,11 +12,11 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "cairn/perception/evaluation/middlebury_pair.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
 #include "cairn/perception/stereo/compute_confidence.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
-#include "cairn/perception/stereo/middlebury_pair.h"
 #include "cairn/perception/stereo/winner_take_all.h"
 
 namespace cairn::perception {

@@ -3,7 +3,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -11,11 +10,16 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "cairn/common/atomic_file.h"
+#include "cairn/common/atomic_output_directory.h"
+#include "cairn/common/json_writer.h"
 #include "cairn/perception/friction/friction_quantile_image.h"
 #include "cairn/perception/friction/make_material_segmenter.h"
 #include "cairn/perception/friction/material_registry.h"
+#include "choice_option.h"
 #include "command_registry.h"
+#include "file_checks.h"
+#include "numeric_option.h"
+#include "quiet_stderr.h"
 
 namespace cairn::cli {
 namespace {
@@ -23,6 +27,10 @@ namespace {
 using perception::FrictionQuantileImage;
 using perception::MaterialRegistry;
 using perception::QuantileMethod;
+
+// eta is a probability in (0, 1); closer to either end than this, 1 - eta rounds (1 - 1e-300 is 1) and the
+// quantile is meaningless.
+constexpr double kMinEta = 1e-6;
 
 struct FrictionArguments {
   std::string image;
@@ -41,24 +49,36 @@ const cv::Vec3b kPalette[] = {
     {30, 90, 170},   {120, 200, 230}, {255, 200, 120}, {255, 255, 255}, {200, 80, 0}, {0, 0, 200},    {80, 220, 220},
 };
 
-void WritePng(const std::string& path, const cv::Mat& image) {
-  std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw std::runtime_error("Cannot encode '" + path + "' as PNG.");
-  WriteFileAtomically(path, std::string(bytes.begin(), bytes.end()));
+// The files `--out` holds; the folder is replaced as a whole (AtomicOutputDirectory).
+bool IsFrictionOutput(const std::string& name) {
+  return name == "materials.png" || name == "friction.png" || name == "friction.json";
 }
 
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+void WritePng(AtomicOutputDirectory* out, const std::string& name, const cv::Mat& image) {
+  std::vector<uchar> bytes;
+  if (!cv::imencode(".png", image, bytes)) {
+    throw std::runtime_error("Cannot encode '" + out->path() + "/" + name + "' as PNG.");
   }
-  return out + "\"";
+  out->WriteFile(name, std::string(bytes.begin(), bytes.end()));
 }
 
 int Run(const FrictionArguments& args) {
-  const cv::Mat image = cv::imread(args.image, cv::IMREAD_UNCHANGED);
-  if (image.empty()) throw std::runtime_error("Cannot read the image '" + args.image + "'; check the path and format.");
+  CheckInputFile("--image", args.image, "an image file");
+  if (!args.registry.empty()) CheckInputFile("--registry", args.registry, "a material registry YAML file");
+  const std::size_t colon = args.segmenter.find(':');
+  if (colon != std::string::npos && colon + 1 < args.segmenter.size()) {
+    CheckInputFile("--segmenter", args.segmenter.substr(colon + 1), "a model YAML file");
+  }
+  // Before the work: an --out that cannot be replaced fails now, not after it.
+  AtomicOutputDirectory out(args.out, IsFrictionOutput);
+  cv::Mat image;
+  {
+    const QuietStderr quiet;  // libpng's own "Read Error" text; the message below says it in one line
+    image = cv::imread(args.image, cv::IMREAD_UNCHANGED);
+  }
+  if (image.empty()) {
+    throw std::runtime_error("Cannot decode the image '" + args.image + "'; give a PNG, JPEG or PGM file.");
+  }
   if (image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
     throw std::invalid_argument("The image '" + args.image + "' has " + std::to_string(image.channels()) +
                                 " channel(s) of depth " + std::to_string(image.depth()) +
@@ -118,35 +138,29 @@ int Run(const FrictionArguments& args) {
   }
   const double pixels = static_cast<double>(q.total());
   const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-  char number[256];
-  std::string json = "{\"image\": " + JsonString(args.image) + ", \"width\": " + std::to_string(image.cols) +
-                     ", \"height\": " + std::to_string(image.rows) + ", \"segmenter\": " + JsonString(args.segmenter) +
-                     ", \"eta\": ";
-  std::snprintf(number, sizeof(number), "%.6g", args.eta);
-  json += number;
-  json += ", \"method\": " + JsonString(args.method);
-  std::snprintf(number, sizeof(number), ", \"quantile_min\": %.6f, \"quantile_mean\": %.6f, \"quantile_max\": %.6f",
-                low, sum / pixels, high);
-  json += number;
-  std::snprintf(number, sizeof(number), ", \"ms_segment\": %.3f, \"ms_quantile\": %.3f", ms(t0, t1), ms(t2, t3));
-  json += number;
-  json += ", \"label_fractions\": {";
-  for (int i = 0; i < n; ++i) {
-    std::snprintf(number, sizeof(number), "%.6f", label_fraction[i] / pixels);
-    json += (i > 0 ? ", " : "") + JsonString(registry.material(i).label) + ": " + number;
-  }
-  json += "}, \"palette_bgr\": {";
+  const JsonWriter::NumberFormat f6 = JsonWriter::Fixed(6);
+  JsonWriter writer;
+  writer.BeginObject().Key("image").String(args.image).Key("width").Integer(image.cols);
+  writer.Key("height").Integer(image.rows).Key("segmenter").String(args.segmenter);
+  writer.Key("eta").Number(args.eta).Key("method").String(args.method);
+  writer.Key("quantile_min").Number(low, f6).Key("quantile_mean").Number(sum / pixels, f6);
+  writer.Key("quantile_max").Number(high, f6);
+  writer.Key("ms_segment").Number(ms(t0, t1), JsonWriter::Fixed(3));
+  writer.Key("ms_quantile").Number(ms(t2, t3), JsonWriter::Fixed(3)).Key("label_fractions").BeginObject();
+  for (int i = 0; i < n; ++i) writer.Key(registry.material(i).label).Number(label_fraction[i] / pixels, f6);
+  writer.EndObject().Key("palette_bgr").BeginObject();
   for (int i = 0; i < n; ++i) {
     const cv::Vec3b& colour = kPalette[i % (sizeof(kPalette) / sizeof(kPalette[0]))];
-    json += (i > 0 ? ", " : "") + JsonString(registry.material(i).label) + ": [" + std::to_string(colour[0]) + ", " +
-            std::to_string(colour[1]) + ", " + std::to_string(colour[2]) + "]";
+    writer.Key(registry.material(i).label).BeginArray();
+    writer.Integer(colour[0]).Integer(colour[1]).Integer(colour[2]).EndArray();
   }
-  json += "}}\n";
+  writer.EndObject().EndObject();
+  const std::string json = writer.text() + "\n";
 
-  std::filesystem::create_directories(args.out);
-  WritePng(args.out + "/materials.png", labels);
-  WritePng(args.out + "/friction.png", grey);
-  WriteFileAtomically(args.out + "/friction.json", json);
+  WritePng(&out, "materials.png", labels);
+  WritePng(&out, "friction.png", grey);
+  out.WriteFile("friction.json", json);
+  out.Commit();
   if (args.json) {
     std::cout << json;
   } else {
@@ -172,12 +186,12 @@ void RegisterFrictionCommand(CommandRegistry* registry) {
                       ->capture_default_str();
                   app.add_option("--registry", args->registry,
                                  "Material registry YAML (default: the thesis' Table 3.3)");
-                  app.add_option("--eta", args->eta, "Probability that friction is at least the quantile")
-                      ->capture_default_str();
-                  app.add_option("--method", args->method, "Quantile method")
-                      ->check(CLI::IsMember({"exact", "search", "gaussian"}))
-                      ->capture_default_str();
-                  app.add_option("--out", args->out, "Output folder")->required();
+                  AddNumberOption(app, "--eta", &args->eta, "Probability that friction is at least the quantile",
+                                  NumberRange::Closed(kMinEta, 1.0 - kMinEta));
+                  AddChoiceOption(app, "--method", &args->method, "Quantile method", {"exact", "search", "gaussian"});
+                  app.add_option("--out", args->out,
+                                 "Output folder (replaced as a whole: materials.png, friction.png, friction.json)")
+                      ->required();
                   app.add_flag("--json", args->json, "Print the statistics as one JSON object");
                   return [args]() { return Run(*args); };
                 });

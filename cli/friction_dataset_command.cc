@@ -3,7 +3,6 @@
 // (scripts/train_material_net.py).
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -11,10 +10,13 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "cairn/common/atomic_file.h"
-#include "cairn/perception/friction/material_scene.h"
-#include "cairn/perception/friction/stereo_material_scene.h"
+#include "cairn/common/atomic_output_directory.h"
+#include "cairn/common/json_writer.h"
+#include "cairn/perception/synthetic/material_scene.h"
+#include "cairn/perception/synthetic/stereo_material_scene.h"
+#include "choice_option.h"
 #include "command_registry.h"
+#include "numeric_option.h"
 
 namespace cairn::cli {
 namespace {
@@ -30,12 +32,29 @@ struct FrictionDatasetState {
   bool json{false};
 };
 
+// The files `--out` holds: labels.txt and image_NNNN.png / label_NNNN.png pairs. The folder is replaced as a
+// whole (AtomicOutputDirectory), so no pair of an earlier, larger dataset survives next to the new ones.
+bool IsDatasetFile(const std::string& name) {
+  if (name == "labels.txt") return true;
+  if (name.size() < 14 || (name.compare(0, 6, "image_") != 0 && name.compare(0, 6, "label_") != 0) ||
+      name.compare(name.size() - 4, 4, ".png") != 0) {
+    return false;
+  }
+  for (std::size_t i = 6; i + 4 < name.size(); ++i) {
+    if (name[i] < '0' || name[i] > '9') return false;
+  }
+  return true;
+}
+
+std::string Png(const cv::Mat& image, const std::string& path) {
+  std::vector<uchar> bytes;
+  if (!cv::imencode(".png", image, bytes)) throw std::runtime_error("Cannot encode '" + path + "' as PNG.");
+  return std::string(bytes.begin(), bytes.end());
+}
+
 int RunFrictionDataset(const FrictionDatasetState& s) {
   using cairn::perception::MaterialScene;
   using cairn::perception::StereoMaterialScene;
-  if (s.images < 1) {
-    throw std::invalid_argument("--images must be >= 1; got " + std::to_string(s.images) + ".");
-  }
   std::unique_ptr<const MaterialScene> material_scene;
   std::unique_ptr<const StereoMaterialScene> stereo_scene;
   std::vector<std::string> labels;
@@ -54,15 +73,12 @@ int RunFrictionDataset(const FrictionDatasetState& s) {
     stereo_scene = std::make_unique<const StereoMaterialScene>(options);
     labels = stereo_scene->options().labels;
   } else {
-    throw std::invalid_argument("--source must be 'material' (MaterialScene renders) or 'stereo' (the synthetic "
-                                "stereo source's renders); got '" + s.source + "'.");
+    throw std::logic_error("--source '" + s.source + "' passed its check");  // AddChoiceOption refuses it
   }
-  std::error_code error;
-  std::filesystem::create_directories(s.out, error);
-  if (error) throw std::runtime_error("cannot create --out folder '" + s.out + "': " + error.message());
+  AtomicOutputDirectory out(s.out, IsDatasetFile);
   std::string label_list;
   for (const std::string& label : labels) label_list += label + "\n";
-  WriteFileAtomically(s.out + "/labels.txt", label_list);
+  out.WriteFile("labels.txt", label_list);
   for (int i = 0; i < s.images; ++i) {
     const unsigned seed = s.seed + static_cast<unsigned>(i);
     cv::Mat image, label_image;
@@ -77,15 +93,17 @@ int RunFrictionDataset(const FrictionDatasetState& s) {
     }
     char name[32];
     std::snprintf(name, sizeof(name), "%04d.png", i);
-    const std::string image_path = s.out + "/image_" + name;
-    const std::string label_path = s.out + "/label_" + name;
-    if (!cv::imwrite(image_path, image) || !cv::imwrite(label_path, label_image)) {
-      throw std::runtime_error("cannot write '" + image_path + "' or '" + label_path + "'; check --out.");
-    }
+    const std::string image_name = std::string("image_") + name;
+    const std::string label_name = std::string("label_") + name;
+    out.WriteFile(image_name, Png(image, s.out + "/" + image_name));
+    out.WriteFile(label_name, Png(label_image, s.out + "/" + label_name));
   }
+  out.Commit();
   if (s.json) {
-    std::printf("{\"out\": \"%s\", \"images\": %d, \"seed\": %u, \"width\": %d, \"height\": %d, \"labels\": %zu}\n",
-                s.out.c_str(), s.images, s.seed, s.width, s.height, labels.size());
+    JsonWriter json;
+    json.BeginObject().Key("out").String(s.out).Key("images").Integer(s.images).Key("seed").Integer(s.seed);
+    json.Key("width").Integer(s.width).Key("height").Integer(s.height).Key("labels").Integer(labels.size());
+    std::printf("%s\n", json.EndObject().text().c_str());
   } else {
     std::printf("wrote %d image/label pairs (%dx%d, %zu labels listed in %s/labels.txt; label 255 = none) to %s\n",
                 s.images, s.width, s.height, labels.size(), s.out.c_str(), s.out.c_str());
@@ -99,18 +117,21 @@ void RegisterFrictionDatasetCommand(CommandRegistry* registry) {
   registry->Add("friction-dataset", "Write labelled material-scene renders (image/label PNG pairs)",
                 [](CLI::App& app) -> CommandAction {
                   auto s = std::make_shared<FrictionDatasetState>();
-                  app.add_option("--out", s->out, "Output folder")->required();
-                  app.add_option("--images", s->images, "Number of image/label pairs")->capture_default_str();
-                  app.add_option("--seed", s->seed, "Seed of the first scene (scene i uses seed + i)")
-                      ->capture_default_str();
-                  app.add_option("--width", s->width, "Image width")->capture_default_str();
-                  app.add_option("--height", s->height, "Image height")->capture_default_str();
-                  app.add_option("--noise", s->noise, "Gaussian noise standard deviation (0..255)")
-                      ->capture_default_str();
-                  app.add_option("--source", s->source,
-                                 "Scene renderer: 'material' (MaterialScene) or 'stereo' (the synthetic stereo "
-                                 "source, StereoMaterialScene)")
-                      ->capture_default_str();
+                  app.add_option("--out", s->out,
+                                 "Output folder (replaced as a whole: labels.txt, image_NNNN.png, label_NNNN.png)")
+                      ->required();
+                  AddNumberOption(app, "--images", &s->images, "Number of image/label pairs",
+                                  NumberRange::Closed(1, 100000));
+                  AddNumberOption(app, "--seed", &s->seed, "Seed of the first scene (scene i uses seed + i)",
+                                  NumberRange::Closed(0, 4294967295.0));
+                  AddNumberOption(app, "--width", &s->width, "Image width", NumberRange::Closed(16, 4096));
+                  AddNumberOption(app, "--height", &s->height, "Image height", NumberRange::Closed(16, 4096));
+                  AddNumberOption(app, "--noise", &s->noise, "Gaussian noise standard deviation (0..255)",
+                                  NumberRange::Closed(0.0, 255.0));
+                  AddChoiceOption(app, "--source", &s->source,
+                                  "Scene renderer: 'material' (MaterialScene) or 'stereo' (the synthetic stereo "
+                                  "source, StereoMaterialScene)",
+                                  {"material", "stereo"});
                   app.add_flag("--json", s->json, "Print one JSON object");
                   return [s] { return RunFrictionDataset(*s); };
                 });

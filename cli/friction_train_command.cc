@@ -9,11 +9,17 @@
 #include <string>
 #include <vector>
 
+#include "cairn/common/json_writer.h"
+#include "cairn/common/number_text.h"
+#include "cairn/perception/evaluation/material_segmentation_score.h"
 #include "cairn/perception/friction/builtin_material_segmenter.h"
-#include "cairn/perception/friction/material_scene.h"
-#include "cairn/perception/friction/material_segmentation_score.h"
-#include "cairn/perception/friction/stereo_material_scene.h"
+#include "cairn/perception/synthetic/material_scene.h"
+#include "cairn/perception/synthetic/stereo_material_scene.h"
+#include "choice_option.h"
 #include "command_registry.h"
+#include "file_checks.h"
+#include "numeric_option.h"
+#include "usage_error.h"
 
 namespace cairn::cli {
 namespace {
@@ -35,15 +41,27 @@ struct FrictionTrainState {
 // Held-out scenes use seeds far from the training ones, so no test scene is a training scene.
 constexpr unsigned kTestSeedOffset = 1000000u;
 
+// Option ranges (--help states them). Sides from the 15-pixel patch the segmenter classifies to a 4K frame;
+// image counts below the test seed offset, so training and test seeds never meet.
+constexpr int kMinSide = 16;
+constexpr int kMaxSide = 4096;
+constexpr int kMaxImages = 100000;
+// Training renders held at once (colour and labels: 4 bytes a pixel, 1 GiB in all).
+constexpr double kMaxTrainingPixels = 268435456.0;
+
 int RunFrictionTrain(const FrictionTrainState& s) {
   using namespace cairn::perception;
-  if (s.images < 2) {
-    throw std::invalid_argument("--images must be >= 2 (the last quarter calibrates the probabilities); got " +
-                                std::to_string(s.images) + ".");
+  // The training renders are all held in memory: bound their pixels before rendering any.
+  const double pixels = static_cast<double>(s.images) * s.width * s.height;
+  if (pixels > kMaxTrainingPixels) {
+    throw UsageError("--images " + std::to_string(s.images) + " of " + std::to_string(s.width) + "x" +
+                     std::to_string(s.height) + " pixels is " + FormatShort(pixels) +
+                     " pixels to hold in memory, more than the limit of " +
+                     std::to_string(static_cast<long long>(kMaxTrainingPixels)) +
+                     "; use fewer or smaller images");
   }
-  if (s.test_images < 1) {
-    throw std::invalid_argument("--test-images must be >= 1; got " + std::to_string(s.test_images) + ".");
-  }
+  // Before the training: an --out that cannot be written fails now, not minutes later.
+  CheckOutputFile("--out", s.out);
   // Scene i of the chosen family as (colour image, label-index image).
   std::vector<std::string> labels;
   std::function<std::pair<cv::Mat, cv::Mat>(unsigned)> render;
@@ -70,8 +88,7 @@ int RunFrictionTrain(const FrictionTrainState& s) {
       return std::make_pair(r.image, r.labels);
     };
   } else {
-    throw std::invalid_argument("--source must be 'material' (MaterialScene renders) or 'stereo' (the synthetic "
-                                "stereo source's renders); got '" + s.source + "'.");
+    throw std::logic_error("--source '" + s.source + "' passed its check");  // AddChoiceOption refuses it
   }
 
   const auto start = std::chrono::steady_clock::now();
@@ -112,24 +129,26 @@ int RunFrictionTrain(const FrictionTrainState& s) {
     }
   }
   if (s.json) {
-    std::printf("{\"model\": \"%s\", \"source\": \"%s\", \"train_images\": %d, \"test_images\": %d, "
-                "\"width\": %d, \"height\": %d, \"train_seconds\": %.2f, \"training_samples\": %d, "
-                "\"calibration_samples\": %d, "
-                "\"temperature\": %.4f, \"calibration_ece_before\": %.4f, \"calibration_ece_after\": %.4f, "
-                "\"test_pixel_accuracy\": %.4f, \"test_class_average_accuracy\": %.4f, \"test_ece\": %.4f, "
-                "\"test_nll\": %.4f, \"segment_ms_per_image\": %.2f, \"per_label_accuracy\": {",
-                s.out.c_str(), s.source.c_str(), s.images, s.test_images, s.width, s.height, train_s,
-                report.num_training_samples, report.num_calibration_samples, report.temperature, report.ece_before,
-                report.ece_after,
-                score.pixel_accuracy(), score.class_average_accuracy(), score.expected_calibration_error(),
-                score.mean_negative_log_likelihood(), segment_ms);
-    bool first = true;
+    const JsonWriter::NumberFormat f2 = JsonWriter::Fixed(2);
+    const JsonWriter::NumberFormat f4 = JsonWriter::Fixed(4);
+    JsonWriter json;
+    json.BeginObject().Key("model").String(s.out).Key("source").String(s.source);
+    json.Key("train_images").Integer(s.images).Key("test_images").Integer(s.test_images);
+    json.Key("width").Integer(s.width).Key("height").Integer(s.height).Key("train_seconds").Number(train_s, f2);
+    json.Key("training_samples").Integer(report.num_training_samples);
+    json.Key("calibration_samples").Integer(report.num_calibration_samples);
+    json.Key("temperature").Number(report.temperature, f4);
+    json.Key("calibration_ece_before").Number(report.ece_before, f4);
+    json.Key("calibration_ece_after").Number(report.ece_after, f4);
+    json.Key("test_pixel_accuracy").Number(score.pixel_accuracy(), f4);
+    json.Key("test_class_average_accuracy").Number(score.class_average_accuracy(), f4);
+    json.Key("test_ece").Number(score.expected_calibration_error(), f4);
+    json.Key("test_nll").Number(score.mean_negative_log_likelihood(), f4);
+    json.Key("segment_ms_per_image").Number(segment_ms, f2).Key("per_label_accuracy").BeginObject();
     for (std::size_t k = 0; k < labels.size(); ++k) {
-      if (per_label[k] < 0.0) continue;
-      std::printf("%s\"%s\": %.4f", first ? "" : ", ", labels[k].c_str(), per_label[k]);
-      first = false;
+      if (per_label[k] >= 0.0) json.Key(labels[k]).Number(per_label[k], f4);
     }
-    std::printf("}}\n");
+    std::printf("%s\n", json.EndObject().EndObject().text().c_str());
   } else {
     std::printf("trained on %d %s renders (%dx%d) in %.1f s: %d patches, %d calibration patches\n", s.images,
                 s.source.c_str(), s.width, s.height, train_s, report.num_training_samples,
@@ -155,22 +174,23 @@ void RegisterFrictionTrainCommand(CommandRegistry* registry) {
                 [](CLI::App& app) -> CommandAction {
                   auto s = std::make_shared<FrictionTrainState>();
                   app.add_option("--out", s->out, "Model file to write (YAML)")->required();
-                  app.add_option("--images", s->images, "Training renders (the last quarter calibrates)")
-                      ->capture_default_str();
-                  app.add_option("--test-images", s->test_images, "Held-out renders to score on")
-                      ->capture_default_str();
-                  app.add_option("--seed", s->seed, "Seed of the first training scene and of training")
-                      ->capture_default_str();
-                  app.add_option("--width", s->width, "Render width")->capture_default_str();
-                  app.add_option("--height", s->height, "Render height")->capture_default_str();
-                  app.add_option("--noise", s->noise, "Gaussian noise standard deviation (0..255)")
-                      ->capture_default_str();
-                  app.add_option("--epochs", s->epochs, "Training passes")->capture_default_str();
-                  app.add_option("--hidden", s->hidden, "Hidden units")->capture_default_str();
-                  app.add_option("--source", s->source,
-                                 "Scene renderer: 'material' (MaterialScene) or 'stereo' (the synthetic stereo "
-                                 "source, StereoMaterialScene); --noise is the standard deviation for both")
-                      ->capture_default_str();
+                  AddNumberOption(app, "--images", &s->images, "Training renders (the last quarter calibrates)",
+                                  NumberRange::Closed(2, kMaxImages));
+                  AddNumberOption(app, "--test-images", &s->test_images, "Held-out renders to score on",
+                                  NumberRange::Closed(1, kMaxImages));
+                  AddNumberOption(app, "--seed", &s->seed, "Seed of the first training scene and of training",
+                                  NumberRange::Closed(0, 4294967295.0));
+                  AddNumberOption(app, "--width", &s->width, "Render width", NumberRange::Closed(kMinSide, kMaxSide));
+                  AddNumberOption(app, "--height", &s->height, "Render height",
+                                  NumberRange::Closed(kMinSide, kMaxSide));
+                  AddNumberOption(app, "--noise", &s->noise, "Gaussian noise standard deviation (0..255)",
+                                  NumberRange::Closed(0.0, 255.0));
+                  AddNumberOption(app, "--epochs", &s->epochs, "Training passes", NumberRange::Closed(1, 10000));
+                  AddNumberOption(app, "--hidden", &s->hidden, "Hidden units", NumberRange::Closed(1, 4096));
+                  AddChoiceOption(app, "--source", &s->source,
+                                  "Scene renderer: 'material' (MaterialScene) or 'stereo' (the synthetic stereo "
+                                  "source, StereoMaterialScene); --noise is the standard deviation for both",
+                                  {"material", "stereo"});
                   app.add_flag("--json", s->json, "Print one JSON object");
                   return [s] { return RunFrictionTrain(*s); };
                 });

@@ -9,12 +9,14 @@
 #include <string>
 #include <vector>
 
+#include <cairn/common/json_writer.h>
 #include <cairn/multibody/center_of_mass.h>
 #include <cairn/multibody/configuration.h>
 #include <cairn/multibody/data.h>
 #include <cairn/multibody/urdf_parser.h>
 
 #include "command_registry.h"
+#include "file_checks.h"
 
 namespace cairn::cli {
 namespace {
@@ -28,38 +30,50 @@ struct ModelInfoOptions {
   bool json = false;
 };
 
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buffer[8];
-          std::snprintf(buffer, sizeof(buffer), "\\u%04x", c);
-          out += buffer;
-        } else {
-          out += c;
-        }
-    }
+// The document as a person reads it: one line per body and per joint. Nine significant digits; JSON has no
+// infinity, so unlimited joints report null.
+std::string ModelJson(const multibody::Model& model, const std::string& file, bool has_mass,
+                      const Eigen::Vector3d& com) {
+  const JsonWriter::NumberFormat digits = JsonWriter::Significant(9);
+  JsonWriter json;
+  json.BeginObject().Key("name").String(model.name()).Key("file").String(file);
+  json.Key("nq").Integer(model.nq()).Key("nv").Integer(model.nv());
+  json.Key("total_mass").Number(model.total_mass(), digits).Key("com_at_zero");
+  if (has_mass) {
+    json.BeginArray().Number(com.x(), digits).Number(com.y(), digits).Number(com.z(), digits).EndArray();
+  } else {
+    json.Null();
   }
-  return out + "\"";
-}
-
-// JSON has no infinity; unlimited joints report null.
-std::string JsonNumber(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.9g", x);
-  return buffer;
+  json.BreakLine(1).Key("bodies").BeginArray();
+  for (int b = 0; b < model.num_bodies(); ++b) {
+    const multibody::Body& body = model.body(b);
+    json.BreakLine(3).BeginObject().Key("name").String(body.name).Key("mass").Number(body.inertia.mass(), digits);
+    json.Key("parent");
+    if (b > 0) {
+      json.String(model.body(model.parent(b)).name);
+    } else {
+      json.Null();
+    }
+    json.Key("collisions").Integer(body.collisions.size()).Key("visuals").Integer(body.visuals.size()).EndObject();
+  }
+  json.EndArray().BreakLine(1).Key("joints").BeginArray();
+  for (int j = 1; j < model.num_bodies(); ++j) {
+    const multibody::Joint& joint = model.joint(j);
+    json.BreakLine(3).BeginObject().Key("name").String(joint.name);
+    json.Key("type").String(joint.continuous ? "continuous" : multibody::JointTypeName(joint.type));
+    json.Key("parent").String(model.body(joint.parent).name).Key("child").String(model.body(j).name);
+    json.Key("idx_q").Integer(joint.idx_q).Key("idx_v").Integer(joint.idx_v);
+    json.Key("lower").Number(joint.lower_limit, digits).Key("upper").Number(joint.upper_limit, digits);
+    json.Key("velocity").Number(joint.velocity_limit, digits).Key("effort").Number(joint.effort_limit, digits);
+    json.EndObject();
+  }
+  json.EndArray().BreakLine(1).Key("frames").BeginArray();
+  for (int f = 0; f < model.num_frames(); ++f) {
+    json.BeginObject().Key("name").String(model.frame(f).name);
+    json.Key("body").String(model.body(model.frame(f).body).name).EndObject();
+  }
+  json.EndArray().EndObject();
+  return json.text();
 }
 
 std::string Vector(const Eigen::Vector3d& v) {
@@ -69,6 +83,7 @@ std::string Vector(const Eigen::Vector3d& v) {
 }
 
 int Run(const ModelInfoOptions& options) {
+  CheckInputFile("the URDF", options.urdf, "a URDF file");
   multibody::UrdfOptions urdf_options;
   urdf_options.floating_base = options.floating_base;
   for (const std::string& spec : options.packages) urdf_options.packages.AddSpec(spec);
@@ -83,37 +98,7 @@ int Run(const ModelInfoOptions& options) {
 
   std::ostringstream out;
   if (options.json) {
-    out << "{\"name\": " << JsonString(model.name()) << ", \"file\": " << JsonString(options.urdf)
-        << ", \"nq\": " << model.nq() << ", \"nv\": " << model.nv()
-        << ", \"total_mass\": " << JsonNumber(model.total_mass()) << ", \"com_at_zero\": "
-        << (has_mass ? "[" + JsonNumber(com.x()) + ", " + JsonNumber(com.y()) + ", " + JsonNumber(com.z()) + "]"
-                     : std::string("null"))
-        << ",\n \"bodies\": [";
-    for (int b = 0; b < model.num_bodies(); ++b) {
-      const multibody::Body& body = model.body(b);
-      out << (b ? ",\n   " : "\n   ") << "{\"name\": " << JsonString(body.name)
-          << ", \"mass\": " << JsonNumber(body.inertia.mass())
-          << ", \"parent\": " << (b ? JsonString(model.body(model.parent(b)).name) : std::string("null"))
-          << ", \"collisions\": " << body.collisions.size() << ", \"visuals\": " << body.visuals.size() << "}";
-    }
-    out << "],\n \"joints\": [";
-    for (int j = 1; j < model.num_bodies(); ++j) {
-      const multibody::Joint& joint = model.joint(j);
-      out << (j > 1 ? ",\n   " : "\n   ") << "{\"name\": " << JsonString(joint.name)
-          << ", \"type\": " << JsonString(joint.continuous ? "continuous" : multibody::JointTypeName(joint.type))
-          << ", \"parent\": " << JsonString(model.body(joint.parent).name)
-          << ", \"child\": " << JsonString(model.body(j).name) << ", \"idx_q\": " << joint.idx_q
-          << ", \"idx_v\": " << joint.idx_v << ", \"lower\": " << JsonNumber(joint.lower_limit)
-          << ", \"upper\": " << JsonNumber(joint.upper_limit) << ", \"velocity\": " << JsonNumber(joint.velocity_limit)
-          << ", \"effort\": " << JsonNumber(joint.effort_limit) << "}";
-    }
-    out << "],\n \"frames\": [";
-    for (int f = 0; f < model.num_frames(); ++f) {
-      out << (f ? ", " : "") << "{\"name\": " << JsonString(model.frame(f).name)
-          << ", \"body\": " << JsonString(model.body(model.frame(f).body).name) << "}";
-    }
-    out << "]}\n";
-    std::cout << out.str();
+    std::cout << ModelJson(model, options.urdf, has_mass, com) << "\n";
     return 0;
   }
   char line[512];

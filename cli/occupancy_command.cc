@@ -4,23 +4,32 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "cairn/perception/occupancy/bars_scenario.h"
+#include "cairn/common/atomic_file.h"
+#include "cairn/common/json_writer.h"
+#include "cairn/perception/evaluation/occupancy_score.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
-#include "cairn/perception/occupancy/occupancy_scenario.h"
-#include "cairn/perception/occupancy/occupancy_score.h"
 #include "cairn/perception/occupancy/wta_range_sensor_model.h"
 #include "cairn/perception/stereo/compute_confidence.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
-#include "cairn/perception/stereo/synthetic_stereo_renderer.h"
+#include "cairn/perception/synthetic/bars_scenario.h"
+#include "cairn/perception/synthetic/occupancy_scenario.h"
+#include "cairn/perception/synthetic/synthetic_stereo_renderer.h"
+#include "choice_option.h"
 #include "command_registry.h"
+#include "file_checks.h"
+#include "numeric_option.h"
 
 namespace cairn::cli {
 namespace {
+
+// Frames are rendered and matched one after the other; more than this is no experiment but an hour-long run.
+constexpr int kMaxFrames = 1000;
 
 struct OccupancyState {
   std::string scenario{"bars"};
@@ -36,13 +45,25 @@ struct OccupancyState {
   bool json{false};
 };
 
+// The occupied cells as an ASCII PLY point cloud (the layout of OccupancyGrid::WritePly), so that it can be
+// written atomically: an interrupted or failed write leaves an earlier file whole.
+std::string PlyText(const perception::OccupancyGrid& grid, double threshold = 0.5) {
+  const std::vector<std::size_t> cells = grid.OccupiedCells(threshold);
+  std::ostringstream out;
+  out << "ply\nformat ascii 1.0\nelement vertex " << cells.size()
+      << "\nproperty float x\nproperty float y\nproperty float z\nproperty float probability\nend_header\n";
+  for (const std::size_t i : cells) {
+    const Eigen::Vector3d p = grid.CellCenter(grid.Cell(i));
+    out << p.x() << " " << p.y() << " " << p.z() << " " << grid.probability(i) << "\n";
+  }
+  return out.str();
+}
+
 int RunOccupancy(const OccupancyState& s) {
   using namespace cairn::perception;
   const bool wta_model = s.model == "wta";
-  if (!wta_model && s.model != "merrell" && s.model != "matthies" && s.model != "exp" && s.model != "hsm") {
-    throw std::invalid_argument("unknown occupancy model '" + s.model +
-                                "'; expected one of 'merrell', 'matthies', 'exp', 'hsm', 'wta'");
-  }
+  if (s.scenario != "bars") CheckInputFile("--scenario", s.scenario, "'bars' or a scenario YAML file");
+  if (!s.ply.empty()) CheckOutputFile("--ply", s.ply);
   const ConfidenceModelType type = wta_model ? ConfidenceModelType::kMerrell : ParseConfidenceModelType(s.model);
   const CostFunction cost = ParseCostFunction(s.cost);
   OccupancyScenario scenario;
@@ -51,20 +72,14 @@ int RunOccupancy(const OccupancyState& s) {
   } else {
     scenario = OccupancyScenario::FromYaml(s.scenario);
     if (s.frames_given) {
-      if (s.frames < 1 || s.frames > static_cast<int>(scenario.trajectory.size())) {
+      if (s.frames > static_cast<int>(scenario.trajectory.size())) {
         throw std::invalid_argument("--frames " + std::to_string(s.frames) + ": scenario '" + s.scenario + "' has " +
                                     std::to_string(scenario.trajectory.size()) + " frames; ask for 1 to that many");
       }
       scenario.trajectory.resize(static_cast<std::size_t>(s.frames));
     }
   }
-  if (s.noise_given) {
-    if (!(s.noise_variance >= 0.0)) {
-      throw std::invalid_argument("--noise-var " + std::to_string(s.noise_variance) +
-                                  " is negative; use 0 for noise-free images");
-    }
-    scenario.noise_variance = s.noise_variance;
-  }
+  if (s.noise_given) scenario.noise_variance = s.noise_variance;
   const SyntheticStereoRenderer renderer(scenario.calibration, scenario.width, scenario.height,
                                          scenario.noise_variance, scenario.seed);
   CostVolumeOptions options;
@@ -83,8 +98,10 @@ int RunOccupancy(const OccupancyState& s) {
   WtaResult wta;
   double total_ms = 0.0;
   OccupancyScore score;
-  if (s.json) std::printf("{\"scenario\": \"%s\", \"model\": \"%s\", \"noise_var\": %g, \"frames\": [", s.scenario.c_str(),
-                s.model.c_str(), scenario.noise_variance);
+  // The JSON document is printed whole at the end, so a failing frame leaves no half-written object.
+  JsonWriter json;
+  json.BeginObject().Key("scenario").String(s.scenario).Key("model").String(s.model);
+  json.Key("noise_var").Number(scenario.noise_variance).Key("frames").BeginArray();
   for (std::size_t f = 0; f < scenario.trajectory.size(); ++f) {
     const auto frame = renderer.Render(scenario.scene, scenario.trajectory[f], static_cast<int>(f));
     const auto start = std::chrono::steady_clock::now();
@@ -104,21 +121,24 @@ int RunOccupancy(const OccupancyState& s) {
     total_ms += ms;
     score = ScoreOccupancy(grid, truth);
     if (s.json) {
-      std::printf("%s{\"frame\": %zu, \"precision\": %.4f, \"recall\": %.4f, \"ms\": %.2f}", f == 0 ? "" : ", ", f,
-                  score.precision, score.recall, ms);
+      json.BeginObject().Key("frame").Integer(f).Key("precision").Number(score.precision, JsonWriter::Fixed(4));
+      json.Key("recall").Number(score.recall, JsonWriter::Fixed(4)).Key("ms").Number(ms, JsonWriter::Fixed(2));
+      json.EndObject();
     } else {
       std::printf("frame %2zu  precision %.3f  recall %.3f  (%.1f ms)\n", f, score.precision, score.recall, ms);
     }
   }
   if (s.json) {
-    std::printf("], \"precision\": %.4f, \"recall\": %.4f, \"ms_per_frame\": %.2f}\n", score.precision, score.recall,
-                total_ms / static_cast<double>(scenario.trajectory.size()));
+    json.EndArray().Key("precision").Number(score.precision, JsonWriter::Fixed(4));
+    json.Key("recall").Number(score.recall, JsonWriter::Fixed(4));
+    json.Key("ms_per_frame").Number(total_ms / static_cast<double>(scenario.trajectory.size()), JsonWriter::Fixed(2));
+    std::printf("%s\n", json.EndObject().text().c_str());
   } else {
     std::printf("final     precision %.3f  recall %.3f  (tp %zu, fp %zu, n %zu); %.1f ms per frame (stereo + grid)\n",
                 score.precision, score.recall, score.true_positives, score.false_positives, score.num_occupied,
                 total_ms / static_cast<double>(scenario.trajectory.size()));
   }
-  if (!s.ply.empty()) grid.WritePly(s.ply);
+  if (!s.ply.empty()) WriteFileAtomically(s.ply, PlyText(grid));
   return 0;
 }
 
@@ -131,17 +151,19 @@ void RegisterOccupancyCommand(CommandRegistry* registry) {
                   app.add_option("--scenario", s->scenario,
                                  "bars (thesis Figs. 4.7/4.8) or a YAML file (docs/occupancy_scenarios.md)")
                       ->capture_default_str();
-                  app.add_option("--model", s->model, "merrell, matthies, exp, hsm (cost-curve, ML) or wta")
-                      ->capture_default_str();
-                  CLI::Option* noise = app.add_option("--noise-var", s->noise_variance,
-                                 "Gaussian image noise variance (0..255 scale); overrides the scenario's")
-                      ->capture_default_str();
-                  app.add_option("--peak-ratio", s->peak_ratio, "WTA model: minimum peak ratio")->capture_default_str();
-                  CLI::Option* frames =
-                      app.add_option("--frames", s->frames, "Number of frames (YAML: the first N of the file's)")
-                      ->capture_default_str();
-                  app.add_option("--cost", s->cost, "ssd or btsad")->capture_default_str();
-                  app.add_option("--window", s->window, "Odd window side")->capture_default_str();
+                  AddChoiceOption(app, "--model", &s->model, "Sensor model: cost-curve (fitted by maximum likelihood) "
+                                  "or winner-take-all ranges", {"merrell", "matthies", "exp", "hsm", "wta"});
+                  CLI::Option* noise = AddNumberOption(app, "--noise-var", &s->noise_variance,
+                                                       "Gaussian image noise variance (0..255 scale); overrides the "
+                                                       "scenario's", NumberRange::Closed(0.0, 255.0 * 255.0));
+                  AddNumberOption(app, "--peak-ratio", &s->peak_ratio, "WTA model: minimum peak ratio (0: off)",
+                                  NumberRange::Closed(0.0, 100.0));
+                  CLI::Option* frames = AddNumberOption(app, "--frames", &s->frames,
+                                                        "Number of frames (YAML: the first N of the file's)",
+                                                        NumberRange::Closed(1, kMaxFrames));
+                  AddChoiceOption(app, "--cost", &s->cost, "Window cost", {"ssd", "btsad"});
+                  AddNumberOption(app, "--window", &s->window, "Window side (ssd: at most 181)",
+                                  NumberRange::Closed(1, 2051).OddOnly());
                   app.add_option("--ply", s->ply, "Write the final occupied cells to this PLY file");
                   app.add_flag("--json", s->json, "Print one JSON object");
                   return [s, noise, frames] {

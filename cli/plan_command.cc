@@ -1,24 +1,33 @@
 // `cairn plan`: energy- and friction-aware footstep planning with step timing on a scenario file.
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
-#include <sstream>
+#include <optional>
 #include <string>
 
-#include "cairn/common/atomic_file.h"
-#include "cairn/planning/footstep/footstep_scenario.h"
+#include "cairn/common/atomic_output_directory.h"
+#include "cairn/common/json_writer.h"
 #include "cairn/planning/footstep/plan_footsteps.h"
 #include "cairn/planning/footstep/refine_footstep_plan.h"
 #include "cairn/planning/locomotion/transition_oracle.h"
 #include "cairn/planning/locomotion/walking_model.h"
 #include "cairn/planning/locomotion/walking_objective.h"
+#include "cairn/planning/scenarios/footstep_scenario.h"
+#include "choice_option.h"
 #include "command_registry.h"
-#include "json.h"
+#include "file_checks.h"
+#include "numeric_option.h"
 #include "plan_image.h"
+#include "progress_bar.h"
 
 namespace cairn::cli {
 namespace {
@@ -46,52 +55,91 @@ std::string DefaultOracleCache() {
   return ".cairn-cache/oracles";
 }
 
-// A one-line progress bar on stderr, redrawn at each whole percent.
-class ProgressBar {
- public:
-  explicit ProgressBar(std::string label) : label_(std::move(label)) {}
-  void Update(std::size_t done, std::size_t total) {
-    const int percent = total == 0 ? 100 : static_cast<int>(100 * done / total);
-    if (percent == last_percent_) return;
-    last_percent_ = percent;
-    const int filled = percent / 4;
-    std::fprintf(stderr, "\r%s [%s%s] %3d%% (%zu/%zu)", label_.c_str(), std::string(filled, '#').c_str(),
-                 std::string(25 - filled, ' ').c_str(), percent, done, total);
-    if (done == total) std::fprintf(stderr, "\n");
-    std::fflush(stderr);
-  }
+// The files `--out` holds; the folder is replaced as a whole (AtomicOutputDirectory).
+bool IsPlanOutput(const std::string& name) { return name == "plan.json" || name == "plan.png"; }
 
- private:
-  std::string label_;
-  int last_percent_{-1};
-};
+void Warn(const std::string& message) { std::fprintf(stderr, "cairn plan: warning: %s\n", message.c_str()); }
+
+// The oracle from the cache folder, or built (with a progress bar) and saved there. A cache folder that cannot be
+// created or written is no reason to fail: the oracle is then built in memory, with a warning, and not kept.
+TransitionOracle LoadOrBuildOracle(const std::string& cache, const WalkingModel& model, WalkingObjective objective) {
+  const OracleGrid grid = OracleGrid::Default(model);
+  grid.Validate(model.reach());
+  const std::string path = cache + "/" + model.name() + "-" + to_string(objective) + ".oracle";
+  std::error_code error;
+  std::filesystem::create_directories(cache, error);
+  std::string unusable;
+  if (error) {
+    unusable = error.message();
+  } else if (!std::filesystem::is_directory(cache, error)) {
+    unusable = "not a folder";
+  } else if (::access(cache.c_str(), W_OK) != 0) {
+    unusable = std::strerror(errno);
+  }
+  std::string reason;
+  if (std::filesystem::is_regular_file(path, error)) {
+    try {
+      TransitionOracle oracle = TransitionOracle::Load(path, model, objective, grid);
+      std::fprintf(stderr, "Loaded transition oracle %s (%zu entries)\n", path.c_str(), oracle.num_entries());
+      return oracle;
+    } catch (const std::runtime_error& failure) {
+      reason = failure.what();
+    }
+  }
+  if (!unusable.empty()) {
+    Warn("the oracle cache folder '" + cache + "' cannot be used (" + unusable +
+         "); building the transition oracle in memory, it will not be kept (give a writable --oracle-cache)");
+  } else if (!reason.empty()) {
+    std::fprintf(stderr, "Rebuilding transition oracle: %s\n", reason.c_str());
+  } else {
+    std::fprintf(stderr, "Building transition oracle %s (%zu entries, objective %s)\n", path.c_str(),
+                 grid.num_entries(), to_string(objective));
+  }
+  OracleBuildOptions build;
+  ProgressBar bar = ProgressBar::ForStderr("building the transition oracle");
+  build.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
+  TransitionOracle oracle = TransitionOracle::Build(model, objective, grid, build);
+  if (unusable.empty()) {
+    try {
+      oracle.Save(path);
+    } catch (const std::runtime_error& failure) {
+      Warn(std::string("the transition oracle is not cached: ") + failure.what());
+    }
+  }
+  return oracle;
+}
 
 std::string PlanJson(const FootstepScenario& scenario, const FootstepPlan& plan, WalkingObjective objective,
                      double refine_ms) {
-  std::ostringstream out;
-  out << "{\"scenario\": " << JsonString(scenario.name()) << ", \"objective\": " << JsonString(to_string(objective))
-      << ", \"found\": " << JsonBool(plan.found) << ", \"reason\": " << JsonString(plan.reason)
-      << ", \"steps\": " << plan.steps.size() << ", \"cost\": " << JsonNumber(plan.cost)
-      << ", \"energy_J\": " << JsonNumber(plan.energy) << ", \"duration_s\": " << JsonNumber(plan.duration)
-      << ", \"distance_m\": " << JsonNumber(plan.distance) << ", \"max_rcof\": " << JsonNumber(plan.max_rcof)
-      << ", \"min_friction_margin\": " << JsonNumber(plan.min_friction_margin)
-      << ", \"epsilon\": " << JsonNumber(plan.statistics.epsilon)
-      << ", \"expansions\": " << plan.statistics.expansions
-      << ", \"plan_ms\": " << JsonNumber(1e3 * plan.statistics.plan_seconds, 4)
-      << ", \"first_plan_ms\": " << JsonNumber(1e3 * plan.statistics.first_plan_seconds, 4)
-      << ", \"refine_ms\": " << JsonNumber(refine_ms, 4) << ", \"footsteps\": [";
-  for (std::size_t k = 0; k < plan.steps.size(); ++k) {
-    const PlannedStep& s = plan.steps[k];
-    out << (k ? ", " : "") << "{\"side\": " << JsonString(FootSideName(s.side)) << ", \"x\": " << JsonNumber(s.pose.x)
-        << ", \"y\": " << JsonNumber(s.pose.y) << ", \"z\": " << JsonNumber(s.pose.z)
-        << ", \"theta\": " << JsonNumber(s.pose.theta) << ", \"t_ds\": " << JsonNumber(s.transition.parameters.t_ds)
-        << ", \"t_sw\": " << JsonNumber(s.transition.parameters.t_sw)
-        << ", \"com_height\": " << JsonNumber(s.transition.parameters.com_height)
-        << ", \"energy_J\": " << JsonNumber(s.transition.com_work + s.transition.heat)
-        << ", \"rcof\": " << JsonNumber(s.transition.rcof) << ", \"mu_allowed\": " << JsonNumber(s.mu_allowed) << "}";
+  // Without a plan its measures do not exist, nor a first-plan time without a first plan: the writer gets NaN
+  // (JSON null) instead of the zeros and the -1 placeholder the struct holds.
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const auto measure = [&](double x) { return plan.found ? x : none; };
+  const double first_plan_ms =
+      plan.statistics.first_plan_seconds >= 0.0 ? 1e3 * plan.statistics.first_plan_seconds : none;
+  const JsonWriter::NumberFormat ms = JsonWriter::Significant(4);
+  JsonWriter json;
+  json.BeginObject().Key("scenario").String(scenario.name()).Key("objective").String(to_string(objective));
+  json.Key("found").Bool(plan.found).Key("reason").String(plan.reason).Key("steps").Integer(plan.steps.size());
+  json.Key("cost").Number(measure(plan.cost)).Key("energy_J").Number(measure(plan.energy));
+  json.Key("duration_s").Number(measure(plan.duration));
+  json.Key("distance_m").Number(measure(plan.distance)).Key("max_rcof").Number(measure(plan.max_rcof));
+  json.Key("min_friction_margin").Number(measure(plan.min_friction_margin));
+  json.Key("epsilon").Number(measure(plan.statistics.epsilon));
+  json.Key("expansions").Integer(plan.statistics.expansions);
+  json.Key("plan_ms").Number(1e3 * plan.statistics.plan_seconds, ms);
+  json.Key("first_plan_ms").Number(first_plan_ms, ms);
+  json.Key("refine_ms").Number(refine_ms, ms).Key("footsteps").BeginArray();
+  for (const PlannedStep& s : plan.steps) {
+    json.BeginObject().Key("side").String(FootSideName(s.side)).Key("x").Number(s.pose.x).Key("y").Number(s.pose.y);
+    json.Key("z").Number(s.pose.z).Key("theta").Number(s.pose.theta);
+    json.Key("t_ds").Number(s.transition.parameters.t_ds).Key("t_sw").Number(s.transition.parameters.t_sw);
+    json.Key("com_height").Number(s.transition.parameters.com_height);
+    json.Key("energy_J").Number(s.transition.com_work + s.transition.heat).Key("rcof").Number(s.transition.rcof);
+    json.Key("mu_allowed").Number(s.mu_allowed).EndObject();
   }
-  out << "]}";
-  return out.str();
+  json.EndArray().EndObject();
+  return json.text();
 }
 
 void PrintSummary(const FootstepScenario& scenario, const FootstepPlan& plan, WalkingObjective objective) {
@@ -118,25 +166,29 @@ void PrintSummary(const FootstepScenario& scenario, const FootstepPlan& plan, Wa
 }
 
 int Run(const PlanArguments& args) {
+  CheckInputFile("--scenario", args.scenario, "a scenario YAML file");
   FootstepScenario scenario = FootstepScenario::Load(args.scenario);
-  const WalkingObjective objective = ParseWalkingObjective(args.objective.empty() ? scenario.objective() : args.objective);
+  const WalkingObjective objective =
+      ParseWalkingObjective(args.objective.empty() ? scenario.objective() : args.objective);
   FootstepPlannerOptions options = scenario.planner();
   if (args.time_limit > 0.0) options.search.time_limit = args.time_limit;
+  const TerrainMap terrain = scenario.BuildTerrain();
+  // Before the oracle and the search: an --out that cannot be written, or a picture too large, fails now
+  // instead of after the whole time limit.
+  std::optional<AtomicOutputDirectory> out;
+  if (!args.out.empty()) {
+    PlanImageSize(terrain);
+    out.emplace(args.out, IsPlanOutput);
+  }
 
   const std::string robot = scenario.robot().empty()
                                 ? std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid_walking.yaml"
                                 : scenario.robot();
+  CheckInputFile("the scenario's robot", robot, "a walking-model YAML file");
   const auto model = std::make_shared<const WalkingModel>(WalkingModel::Load(robot));
-  const std::string cache = args.oracle_cache.empty() ? DefaultOracleCache() : args.oracle_cache;
-  std::filesystem::create_directories(cache);
-  const std::string oracle_path = cache + "/" + model->name() + "-" + to_string(objective) + ".oracle";
-  OracleBuildOptions build;
-  ProgressBar bar("building the transition oracle");
-  build.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
   const TransitionOracle oracle =
-      TransitionOracle::LoadOrBuild(oracle_path, *model, objective, OracleGrid::Default(*model), build, &std::cerr);
+      LoadOrBuildOracle(args.oracle_cache.empty() ? DefaultOracleCache() : args.oracle_cache, *model, objective);
 
-  const TerrainMap terrain = scenario.BuildTerrain();
   BipedGeometry geometry;
   geometry.foot_length = model->foot_length();
   geometry.foot_width = model->foot_width();
@@ -151,17 +203,16 @@ int Run(const PlanArguments& args) {
   }
 
   const std::string json = PlanJson(scenario, plan, objective, refine_ms);
-  if (!args.out.empty()) {
-    std::filesystem::create_directories(args.out);
-    // The picture first: it is the one that can fail (size), and then neither file is replaced.
-    WritePlanImage(args.out + "/plan.png", terrain, plan, scenario.goal(), geometry);
-    WriteFileAtomically(args.out + "/plan.json", json + "\n");
+  if (out) {
+    out->WriteFile("plan.png", PlanImagePng(terrain, plan, scenario.goal(), geometry));
+    out->WriteFile("plan.json", json + "\n");
+    out->Commit();
   }
   if (args.json) {
     std::printf("%s\n", json.c_str());
   } else {
     PrintSummary(scenario, plan, objective);
-    if (!args.out.empty()) std::printf("wrote      %s/plan.json, %s/plan.png\n", args.out.c_str(), args.out.c_str());
+    if (out) std::printf("wrote      %s/plan.json, %s/plan.png\n", args.out.c_str(), args.out.c_str());
   }
   return 0;
 }
@@ -173,12 +224,14 @@ void RegisterPlanCommand(CommandRegistry* registry) {
                 [](CLI::App& app) -> CommandAction {
                   auto args = std::make_shared<PlanArguments>();
                   app.add_option("--scenario", args->scenario, "Scenario YAML (docs/scenarios.md)")->required();
-                  app.add_option("--objective", args->objective, "Step objective (default: the scenario's)")
-                      ->check(CLI::IsMember(WalkingObjectiveNames()));
-                  app.add_option("--time-limit", args->time_limit, "Planning time budget in seconds")
-                      ->check(CLI::PositiveNumber);
+                  AddChoiceOption(app, "--objective", &args->objective, "Step objective (default: the scenario's)",
+                                  WalkingObjectiveNames());
+                  AddNumberOption(app, "--time-limit", &args->time_limit,
+                                  "Planning time budget in seconds (default: the scenario's)",
+                                  NumberRange::AboveAtMost(0.0, 86400.0))
+                      ->default_str("");
                   app.add_flag("--json", args->json, "Print the plan as one JSON object");
-                  app.add_option("--out", args->out, "Folder for plan.json and plan.png");
+                  app.add_option("--out", args->out, "Folder for plan.json and plan.png (replaced as a whole)");
                   app.add_option("--oracle-cache", args->oracle_cache,
                                  "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
                   app.add_flag("--no-refine", args->no_refine, "Keep the table's step parameters (skip SLSQP)");

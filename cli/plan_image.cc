@@ -8,12 +8,14 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "cairn/common/atomic_file.h"
+#include "cairn/common/number_text.h"
 
 namespace cairn::cli {
 namespace {
 
 using planning::FootPose;
+
+constexpr double kMaxPixels = 64e6;
 
 // Friction to colour (BGR): red at 0, yellow at 0.5, green from 1.
 cv::Vec3b FrictionColour(double mu, double shade) {
@@ -25,16 +27,24 @@ cv::Vec3b FrictionColour(double mu, double shade) {
 
 }  // namespace
 
-void WritePlanImage(const std::string& path, const planning::TerrainMap& terrain, const planning::FootstepPlan& plan,
-                    const planning::StanceGoal& goal, const planning::BipedGeometry& geometry,
-                    double pixels_per_metre) {
+std::pair<int, int> PlanImageSize(const planning::TerrainMap& terrain, double pixels_per_metre) {
   const Eigen::Vector2d lo = terrain.min_corner(), hi = terrain.max_corner();
-  const int width = std::max(1, static_cast<int>(std::lround((hi.x() - lo.x()) * pixels_per_metre)));
-  const int height = std::max(1, static_cast<int>(std::lround((hi.y() - lo.y()) * pixels_per_metre)));
-  if (static_cast<double>(width) * height > 64e6) {
-    throw std::invalid_argument("The plan image would be " + std::to_string(width) + " x " + std::to_string(height) +
-                                " pixels; use a smaller scale.");
+  const double width = std::max(1.0, std::round((hi.x() - lo.x()) * pixels_per_metre));
+  const double height = std::max(1.0, std::round((hi.y() - lo.y()) * pixels_per_metre));
+  if (!(width * height <= kMaxPixels)) {
+    throw std::invalid_argument("The plan image of the " + FormatShort(hi.x() - lo.x()) + " m x " +
+                                FormatShort(hi.y() - lo.y()) + " m terrain would be " + FormatShort(width) + " x " +
+                                FormatShort(height) + " pixels, more than the limit of " + FormatShort(kMaxPixels) +
+                                "; plan without --out or on a smaller terrain.");
   }
+  return {static_cast<int>(width), static_cast<int>(height)};
+}
+
+std::string PlanImagePng(const planning::TerrainMap& terrain, const planning::FootstepPlan& plan,
+                         const planning::StanceGoal& goal, const planning::BipedGeometry& geometry,
+                         double pixels_per_metre) {
+  const auto [width, height] = PlanImageSize(terrain, pixels_per_metre);
+  const Eigen::Vector2d lo = terrain.min_corner(), hi = terrain.max_corner();
   // Image rows grow downwards while y grows up: row 0 is the largest y.
   auto to_pixel = [&](double x, double y) {
     return cv::Point2d((x - lo.x()) * pixels_per_metre, (hi.y() - y) * pixels_per_metre);
@@ -85,8 +95,8 @@ void WritePlanImage(const std::string& path, const planning::TerrainMap& terrain
     sole(step.pose, step.side == planning::FootSide::kLeft ? cv::Scalar(255, 80, 0) : cv::Scalar(40, 0, 200));
   }
   std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw std::runtime_error("Cannot encode '" + path + "' as PNG.");
-  WriteFileAtomically(path, std::string(bytes.begin(), bytes.end()));
+  if (!cv::imencode(".png", image, bytes)) throw std::runtime_error("Cannot encode the plan image as PNG.");
+  return std::string(bytes.begin(), bytes.end());
 }
 
 }  // namespace cairn::cli

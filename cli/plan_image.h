@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include <cairn/planning/footstep/biped_geometry.h>
 #include <cairn/planning/footstep/foot_pose.h>
@@ -9,11 +10,16 @@
 
 namespace cairn::cli {
 
-/// Writes a top-down PNG of a plan (atomically): terrain coloured by friction (red at 0 through yellow to green
-/// at 1 and above, shaded by height; black without ground), obstacles dark grey, the start stance white, the goal
-/// yellow, and each planned sole outlined (left blue, right red). `pixels_per_metre` sets the scale.
-void WritePlanImage(const std::string& path, const planning::TerrainMap& terrain, const planning::FootstepPlan& plan,
-                    const planning::StanceGoal& goal, const planning::BipedGeometry& geometry,
-                    double pixels_per_metre = 100.0);
+/// The size in pixels of the plan image of `terrain` at `pixels_per_metre` (width, height). Throws
+/// std::invalid_argument if it exceeds 64 million pixels, so that a command can check before planning.
+std::pair<int, int> PlanImageSize(const planning::TerrainMap& terrain, double pixels_per_metre = 100.0);
+
+/// A top-down PNG of a plan, encoded in memory (to be written atomically): terrain coloured by friction (red at 0
+/// through yellow to green at 1 and above, shaded by height; black without ground), obstacles dark grey, the
+/// start stance white, the goal yellow, and each planned sole outlined (left blue, right red).
+/// `pixels_per_metre` sets the scale. Throws as PlanImageSize, or std::runtime_error if encoding fails.
+std::string PlanImagePng(const planning::TerrainMap& terrain, const planning::FootstepPlan& plan,
+                         const planning::StanceGoal& goal, const planning::BipedGeometry& geometry,
+                         double pixels_per_metre = 100.0);
 
 }  // namespace cairn::cli

@@ -2,6 +2,7 @@
 // truth with the thesis' criteria (section 4.3.4).
 
 #include <chrono>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -12,16 +13,29 @@
 #include <string>
 #include <vector>
 
+#include "cairn/common/json_writer.h"
+#include "cairn/perception/evaluation/middlebury_pair.h"
+#include "cairn/perception/evaluation/stereo_evaluation.h"
 #include "cairn/perception/stereo/compute_confidence.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
-#include "cairn/perception/stereo/middlebury_pair.h"
-#include "cairn/perception/stereo/stereo_evaluation.h"
 #include "cairn/perception/stereo/winner_take_all.h"
+#include "cairn/common/number_text.h"
+#include "choice_option.h"
 #include "command_registry.h"
+#include "file_checks.h"
+#include "numeric_option.h"
+#include "quiet_stderr.h"
+#include "usage_error.h"
 
 namespace cairn::cli {
 namespace {
+
+// Option ranges (--help states them). Disparities and borders beyond these exceed any image the loaders take;
+// the image-dependent limits (a range wider than the image) are the stereo library's.
+constexpr int kMaxDisparity = 4095;
+constexpr int kMaxBorder = 10000;
+constexpr double kMaxParameter = 1e12;
 
 struct StereoEvalState {
   std::string left;
@@ -53,21 +67,37 @@ int RunStereoEval(const StereoEvalState& s) {
   const bool ml = s.params == "ml";
   const bool from_gt = s.params == "gt";
   if (!ml && !from_gt) {
-    std::istringstream in(s.params);
-    if (!(in >> fixed_parameter) || !in.eof()) {
-      throw std::invalid_argument("--params '" + s.params +
-                                  "' is neither 'ml', 'gt' nor a number; e.g. --params ml or --params 8.49e1");
+    // A value of the model's parameter (a variance or a scale of costs), else the ways to fit it.
+    try {
+      fixed_parameter = ParseNumber<double>("--params", s.params, NumberRange::AboveAtMost(0.0, kMaxParameter));
+    } catch (const UsageError&) {
+      if (!s.params.empty() && (std::isdigit(static_cast<unsigned char>(s.params[0])) || s.params[0] == '-' ||
+                                s.params[0] == '.' || s.params[0] == '+')) {
+        throw;
+      }
+      throw UsageError("--params '" + s.params + "' is neither 'ml', 'gt' nor a number; e.g. --params ml or "
+                       "--params 8.49e1");
     }
   }
-  const cv::Mat left = LoadGrayImage(s.left);
-  const cv::Mat right = LoadGrayImage(s.right);
+  CheckInputFile("--left", s.left, "an image file");
+  CheckInputFile("--right", s.right, "an image file");
+  CheckInputFile("--gt", s.gt, "an image file");
+  if (!s.gt_right.empty()) CheckInputFile("--gt-right", s.gt_right, "an image file");
+  // libpng prints its own complaint about a corrupt file before the loader reports it.
+  cv::Mat left, right, gt, gt_right;
+  {
+    const QuietStderr quiet;
+    left = LoadGrayImage(s.left);
+    right = LoadGrayImage(s.right);
+    gt = LoadDisparityImage(s.gt, s.gt_scale);
+    if (!s.gt_right.empty()) gt_right = LoadDisparityImage(s.gt_right, s.gt_scale);
+  }
   if (left.size() != right.size()) {
     throw std::invalid_argument("left image '" + s.left + "' is " + std::to_string(left.cols) + "x" +
                                 std::to_string(left.rows) + " but right image '" + s.right + "' is " +
                                 std::to_string(right.cols) + "x" + std::to_string(right.rows) +
                                 "; pass a rectified pair of equal size");
   }
-  const cv::Mat gt = LoadDisparityImage(s.gt, s.gt_scale);
   if (gt.size() != left.size()) {
     throw std::invalid_argument("ground truth '" + s.gt + "' is " + std::to_string(gt.cols) + "x" +
                                 std::to_string(gt.rows) + " but the images are " + std::to_string(left.cols) + "x" +
@@ -75,7 +105,6 @@ int RunStereoEval(const StereoEvalState& s) {
   }
   cv::Mat occluded;
   if (!s.gt_right.empty()) {
-    const cv::Mat gt_right = LoadDisparityImage(s.gt_right, s.gt_scale);
     if (gt_right.size() != gt.size()) {
       throw std::invalid_argument("right ground truth '" + s.gt_right + "' differs in size from '" + s.gt + "'");
     }
@@ -128,13 +157,20 @@ int RunStereoEval(const StereoEvalState& s) {
   const StereoEvaluation result = EvaluateStereo(confidence, wta, gt, occluded, evaluation_options);
   const double parameter = model->parameter();
   if (s.json) {
-    std::printf(
-        "{\"bad_pixel_rate\": %.6f, \"bad_pixel_rate_subpixel\": %.6f, \"auc\": %.6f, \"auc_optimal\": %.6f, \"c_gt_badpx\": %.6f, "
-        "\"parameter\": %s, \"model\": \"%s\", \"cost\": \"%s\", \"window\": %d, \"max_disparity\": %d, "
-        "\"pixels\": %zu, \"ms_cost_volume\": %.3f, \"ms_wta\": %.3f, \"ms_confidence\": %.3f}\n",
-        result.bad_pixel_rate, result.bad_pixel_rate_subpixel, result.auc, result.auc_optimal, result.c_gt_badpx,
-        std::isfinite(parameter) ? std::to_string(parameter).c_str() : "null", s.model.c_str(), s.cost.c_str(),
-        s.window, options.max_disparity, result.num_pixels, ms_cost_volume, ms_wta, ms_confidence);
+    const JsonWriter::NumberFormat f3 = JsonWriter::Fixed(3);
+    const JsonWriter::NumberFormat f6 = JsonWriter::Fixed(6);
+    JsonWriter json;
+    json.BeginObject().Key("bad_pixel_rate").Number(result.bad_pixel_rate, f6);
+    json.Key("bad_pixel_rate_subpixel").Number(result.bad_pixel_rate_subpixel, f6);
+    json.Key("auc").Number(result.auc, f6).Key("auc_optimal").Number(result.auc_optimal, f6);
+    json.Key("c_gt_badpx").Number(result.c_gt_badpx, f6);
+    // Nine significant digits: "%f" wrote a parameter of 1e-300 as 0.000000. The histogram model's NaN is null.
+    json.Key("parameter").Number(parameter, JsonWriter::Significant(9));
+    json.Key("model").String(s.model).Key("cost").String(s.cost).Key("window").Integer(s.window);
+    json.Key("max_disparity").Integer(options.max_disparity).Key("pixels").Integer(result.num_pixels);
+    json.Key("ms_cost_volume").Number(ms_cost_volume, f3).Key("ms_wta").Number(ms_wta, f3);
+    json.Key("ms_confidence").Number(ms_confidence, f3).EndObject();
+    std::printf("%s\n", json.text().c_str());
   } else {
     std::printf("model            %s\n", model->Describe().c_str());
     std::printf("disparities      0..%d, %s %dx%d, prefilter %s\n", options.max_disparity, s.cost.c_str(), s.window,
@@ -158,20 +194,26 @@ void RegisterStereoEvalCommand(CommandRegistry* registry) {
                   app.add_option("--left", s->left, "Left (reference) image")->required();
                   app.add_option("--right", s->right, "Right image")->required();
                   app.add_option("--gt", s->gt, "Left ground-truth disparity PNG (0 = unknown)")->required();
-                  app.add_option("--gt-scale", s->gt_scale, "Ground-truth PNG value per pixel of disparity")
-                      ->required();
+                  AddNumberOption(app, "--gt-scale", &s->gt_scale, "Ground-truth PNG value per pixel of disparity",
+                                  NumberRange::AboveAtMost(0.0, 255.0))
+                      ->required()
+                      ->default_str("");
                   app.add_option("--gt-right", s->gt_right, "Right ground truth, to exclude occluded pixels");
-                  app.add_option("--dmax", s->dmax,
-                                 "Largest disparity (default: the ground truth's, rounded up to 16k - 1)");
-                  app.add_option("--cost", s->cost, "Window cost: ssd or btsad")->capture_default_str();
-                  app.add_option("--window", s->window, "Odd window side")->capture_default_str();
-                  app.add_option("--model", s->model, "Confidence model: matthies, merrell, exp or hsm")
-                      ->capture_default_str();
+                  AddNumberOption(app, "--dmax", &s->dmax,
+                                  "Largest disparity (default: the ground truth's, rounded up to 16k - 1)",
+                                  NumberRange::Closed(0, kMaxDisparity))
+                      ->default_str("");
+                  AddChoiceOption(app, "--cost", &s->cost, "Window cost", {"ssd", "btsad"});
+                  AddNumberOption(app, "--window", &s->window, "Window side (ssd: at most 181)",
+                                  NumberRange::Closed(1, 2051).OddOnly());
+                  AddChoiceOption(app, "--model", &s->model, "Confidence model", {"matthies", "merrell", "exp", "hsm"});
                   app.add_option("--params", s->params,
-                                 "ml (maximum likelihood, no ground truth), gt (fit at true disparities) or a value")
+                                 "ml (maximum likelihood, no ground truth), gt (fit at true disparities) or a value "
+                                 "(greater than 0 and at most " + FormatShort(kMaxParameter) + ")")
                       ->capture_default_str();
-                  app.add_option("--prefilter", s->prefilter, "sobel or none")->capture_default_str();
-                  app.add_option("--border", s->border, "Ignored border (pixels)")->capture_default_str();
+                  AddChoiceOption(app, "--prefilter", &s->prefilter, "Prefilter", {"sobel", "none"});
+                  AddNumberOption(app, "--border", &s->border, "Ignored border (pixels)",
+                                  NumberRange::Closed(0, kMaxBorder));
                   app.add_flag("--json", s->json, "Print one JSON object");
                   return [s] { return RunStereoEval(*s); };
                 });

@@ -19,6 +19,7 @@ find_package(urdfdom CONFIG REQUIRED)
 find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs calib3d ml dnn ximgproc)
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
 find_package(yaml-cpp CONFIG REQUIRED)
+find_package(nlohmann_json 3.11 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 
 if(CAIRN_BUILD_TESTS)

@@ -11,21 +11,26 @@ if(CAIRN_WARNINGS_AS_ERRORS)
 endif()
 
 # Exposes a top-level source folder (systems, optimization, ...) under <cairn/...> in the build tree and
-# installs its headers under include/cairn/.
+# installs its headers under include/cairn/. Headers in any `internal/` folder are the libraries' own and are not
+# installed, so no installed header may include one (the install test compiles every installed header).
 function(cairn_expose_module module)
   set(link "${CAIRN_BUILD_INCLUDE_DIR}/cairn/${module}")
   if(NOT EXISTS "${link}")
     file(CREATE_LINK "${PROJECT_SOURCE_DIR}/${module}" "${link}" SYMBOLIC)
   endif()
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${module}/" DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cairn/${module}
-    FILES_MATCHING PATTERN "*.h")
+    FILES_MATCHING PATTERN "*.h" PATTERN "internal" EXCLUDE)
 endfunction()
 
 # cairn_add_library(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
 # Creates target cairn_<name>, alias Cairn::<name>, exported and installed as Cairn::<name>.
+# PUBLIC_DEPS are what the library's installed headers include (they reach every user, and the package config
+# must find them); everything only its sources use is PRIVATE.
 function(cairn_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(cairn_${name} ${ARG_SOURCES})
+  # The package config lists the components, and the install test checks that it uses every one of them.
+  set_property(GLOBAL APPEND PROPERTY CAIRN_COMPONENTS ${name})
   add_library(Cairn::${name} ALIAS cairn_${name})
   set_target_properties(cairn_${name} PROPERTIES EXPORT_NAME ${name} VERSION ${PROJECT_VERSION}
     SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})

@@ -14,13 +14,20 @@ namespace cairn {
 namespace {
 
 [[noreturn]] void Fail(const std::string& what, const std::string& path, int error) {
-  throw std::runtime_error("Cannot write '" + path + "': " + what + " failed (" + std::strerror(error) +
-                           "). Check that the folder exists and is writable.");
+  const bool folder_problem =
+      error == ENOENT || error == ENOTDIR || error == EACCES || error == EPERM || error == EROFS;
+  throw std::runtime_error("Cannot write '" + path + "': " + what + " failed (" + std::strerror(error) + ")." +
+                           (folder_problem ? " Check that the folder exists and is writable." : ""));
 }
 
 }  // namespace
 
 void WriteFileAtomically(const std::string& path, const std::string& contents) {
+  if (path.empty()) throw std::runtime_error("Cannot write a file with an empty name; give a file name.");
+  struct stat existing {};
+  if (::stat(path.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode)) {
+    throw std::runtime_error("Cannot write '" + path + "': it is a folder; give a file name.");
+  }
   std::string pattern = path + ".tmp.XXXXXX";
   std::vector<char> buffer(pattern.begin(), pattern.end());
   buffer.push_back('\0');

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/geometry/shape/box.h>
@@ -18,6 +20,7 @@
 #include <fcl/math/bv/OBBRSS.h>
 #include <fcl/narrowphase/distance.h>
 
+#include <cairn/common/number_text.h>
 #include <cairn/common/text_suggestions.h>
 #include <cairn/multibody/joint_motion.h>
 
@@ -29,9 +32,23 @@ using Mesh = fcl::BVHModel<fcl::OBBRSSd>;
 // Reads binary or ASCII STL triangles, scaled per axis.
 std::shared_ptr<Mesh> ReadStl(const std::string& path, const Eigen::Vector3d& scale, const std::string& owner,
                               double* extent) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw std::invalid_argument(owner + ": mesh '" + path + "' is a directory, expected an STL file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument(owner + ": cannot open mesh '" + path + "'");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Read at most one byte past the limit, so that a huge or endless file is refused without reading it all.
+  std::string bytes;
+  char buffer[1 << 16];
+  while (in && bytes.size() <= kMaxMeshBytes) {
+    in.read(buffer, sizeof(buffer));
+    bytes.append(buffer, static_cast<std::size_t>(in.gcount()));
+  }
+  if (bytes.size() > kMaxMeshBytes) {
+    throw std::invalid_argument(owner + ": mesh '" + path + "' is larger than " + std::to_string(kMaxMeshBytes) +
+                                " bytes (256 MiB, kMaxMeshBytes); simplify the mesh for collision queries");
+  }
   std::vector<fcl::Vector3d> vertices;
   std::vector<fcl::Triangle> triangles;
   auto add = [&](const Eigen::Vector3d& v) {
@@ -64,8 +81,17 @@ std::shared_ptr<Mesh> ReadStl(const std::string& path, const Eigen::Vector3d& sc
     while (text >> word) {
       if (word != "vertex") continue;
       Eigen::Vector3d v;
-      text >> v.x() >> v.y() >> v.z();
+      if (!(text >> v.x() >> v.y() >> v.z())) {
+        throw std::invalid_argument(owner + ": mesh '" + path + "': vertex " + std::to_string(vertices.size()) +
+                                    " does not hold three numbers; the ASCII STL file is corrupt");
+      }
       add(v);
+    }
+  }
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (!vertices[i].allFinite()) {
+      throw std::invalid_argument(owner + ": mesh '" + path + "': vertex " + std::to_string(i) +
+                                  " is not finite (NaN or infinite); the STL file is corrupt");
     }
   }
   if (vertices.empty() || vertices.size() % 3 != 0) {
@@ -409,7 +435,7 @@ int CollisionWorld::AddBox(const std::string& name, const Eigen::Vector3d& size,
 
 int CollisionWorld::AddSphere(const std::string& name, double radius, const Eigen::Vector3d& center) {
   if (!(radius > 0.0) || !std::isfinite(radius)) {
-    throw std::invalid_argument("CollisionWorld::AddSphere('" + name + "'): radius " + std::to_string(radius) +
+    throw std::invalid_argument("CollisionWorld::AddSphere('" + name + "'): radius " + FormatShort(radius) +
                                 " must be positive and finite");
   }
   Impl::Item item;
@@ -427,7 +453,7 @@ int CollisionWorld::AddPoints(const std::string& name, const Eigen::Matrix3Xd& p
     throw std::invalid_argument("CollisionWorld::AddPoints('" + name + "'): give at least one finite point");
   }
   if (!(radius >= 0.0) || !std::isfinite(radius)) {
-    throw std::invalid_argument("CollisionWorld::AddPoints('" + name + "'): radius " + std::to_string(radius) +
+    throw std::invalid_argument("CollisionWorld::AddPoints('" + name + "'): radius " + FormatShort(radius) +
                                 " must be >= 0");
   }
   Impl::Item item;
@@ -445,7 +471,7 @@ int CollisionWorld::AddHeightField(const std::string& name, const Eigen::MatrixX
   }
   if (!(cell_size > 0.0) || !std::isfinite(cell_size)) {
     throw std::invalid_argument("CollisionWorld::AddHeightField('" + name + "'): cell size " +
-                                std::to_string(cell_size) + " must be positive");
+                                FormatShort(cell_size) + " must be positive");
   }
   if (!origin.allFinite() || !std::isfinite(bottom)) {
     throw std::invalid_argument("CollisionWorld::AddHeightField('" + name + "'): origin and bottom must be finite");
@@ -453,8 +479,8 @@ int CollisionWorld::AddHeightField(const std::string& name, const Eigen::MatrixX
   for (Eigen::Index k = 0; k < heights.size(); ++k) {
     const double h = heights.data()[k];
     if (std::isinf(h) || (!std::isnan(h) && h < bottom)) {
-      throw std::invalid_argument("CollisionWorld::AddHeightField('" + name + "'): height " + std::to_string(h) +
-                                  " is infinite or below the bottom " + std::to_string(bottom) +
+      throw std::invalid_argument("CollisionWorld::AddHeightField('" + name + "'): height " + FormatShort(h) +
+                                  " is infinite or below the bottom " + FormatShort(bottom) +
                                   "; lower the bottom or mark unknown cells with NaN");
     }
   }
@@ -538,6 +564,10 @@ ShapeDistance CollisionWorld::ComputeDistance(int a, int b) const {
 }
 
 std::vector<CollisionPair> CollisionWorld::PairsWithin(double margin) const {
+  if (std::isnan(margin)) {
+    throw std::invalid_argument("CollisionWorld::PairsWithin: the margin is NaN; give a distance in metres "
+                                "(infinity for every pair)");
+  }
   std::vector<CollisionPair> pairs;
   const int n = num_geometries();
   for (int a = 0; a < n; ++a) {
@@ -563,6 +593,10 @@ std::vector<CollisionPair> CollisionWorld::PairsWithin(double margin) const {
 }
 
 CollisionPair CollisionWorld::ClosestPair(double max_distance) const {
+  if (std::isnan(max_distance)) {
+    throw std::invalid_argument("CollisionWorld::ClosestPair: max_distance is NaN; give a distance in metres "
+                                "(infinity for no limit)");
+  }
   CollisionPair best;
   best.result.distance = max_distance;
   for (const CollisionPair& pair : PairsWithin(max_distance)) {

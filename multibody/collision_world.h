@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <limits>
 #include <memory>
 #include <string>
@@ -14,6 +15,11 @@
 #include <cairn/multibody/shape_distance.h>
 
 namespace cairn::multibody {
+
+/// Largest mesh file CollisionWorld reads: 256 MiB (about 5 million binary STL triangles). Collision meshes are
+/// usually simplified to a few thousand triangles; the bound keeps a wrong path (a device, a huge scan) from
+/// being read into memory whole.
+inline constexpr std::size_t kMaxMeshBytes = std::size_t{256} << 20;
 
 /// A pair of collision geometries (indices into the world) and their signed distance.
 struct CollisionPair {
@@ -38,7 +44,8 @@ struct CollisionPair {
 class CollisionWorld {
  public:
   /// Takes the collision geometry of every body of `model` (geometry i keeps the body's order of shapes).
-  /// Throws std::invalid_argument for a mesh file that is not a readable STL.
+  /// Throws std::invalid_argument for a mesh file that is not a readable STL, is larger than kMaxMeshBytes or
+  /// holds a vertex that is not finite.
   explicit CollisionWorld(const Model& model);
   ~CollisionWorld();
   CollisionWorld(CollisionWorld&&) noexcept;
@@ -83,11 +90,12 @@ class CollisionWorld {
   /// Signed distance between geometries a and b (no filtering).
   ShapeDistance ComputeDistance(int a, int b) const;
 
-  /// Every checked pair whose signed distance is below `margin`, ordered by (geometry_a, geometry_b).
+  /// Every checked pair whose signed distance is below `margin`, ordered by (geometry_a, geometry_b); throws
+  /// std::invalid_argument for a NaN margin.
   std::vector<CollisionPair> PairsWithin(double margin) const;
 
   /// The checked pair with the smallest signed distance among those closer than `max_distance`; geometry_a is
-  /// -1 if there is none.
+  /// -1 if there is none. Throws std::invalid_argument for a NaN max_distance.
   CollisionPair ClosestPair(double max_distance = std::numeric_limits<double>::infinity()) const;
 
   /// Gradient of pair.result.distance with respect to a tangent perturbation of q (size nv), from the witness

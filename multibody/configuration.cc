@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/joint_motion.h>
 
 namespace cairn::multibody {
@@ -187,6 +188,10 @@ void NormalizeConfiguration(const Model& model, Eigen::Ref<Eigen::VectorXd> q) {
 }
 
 Eigen::VectorXd RandomConfiguration(const Model& model, std::mt19937& rng, double unlimited_range) {
+  if (!(unlimited_range >= 0.0) || !std::isfinite(unlimited_range)) {
+    throw std::invalid_argument("RandomConfiguration: unlimited_range " + FormatShort(unlimited_range) +
+                                " must be finite and >= 0 (e.g. pi for unlimited angles)");
+  }
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
   Eigen::VectorXd q = NeutralConfiguration(model);
@@ -215,6 +220,9 @@ Eigen::VectorXd RandomConfiguration(const Model& model, std::mt19937& rng, doubl
 }
 
 bool IsWithinPositionLimits(const Model& model, const Eigen::Ref<const Eigen::VectorXd>& q, double tolerance) {
+  if (!(tolerance >= 0.0)) {
+    throw std::invalid_argument("IsWithinPositionLimits: tolerance " + FormatShort(tolerance) + " must be >= 0");
+  }
   if (model.nq() == 0) {
     CheckQ(model, q.size(), "IsWithinPositionLimits");
     return true;

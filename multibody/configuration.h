@@ -36,9 +36,10 @@ void NormalizeConfiguration(const Model& model, Eigen::Ref<Eigen::VectorXd> q);
 /// A random configuration: limited coordinates uniform within their limits, unlimited ones uniform in
 /// [-unlimited_range, unlimited_range], floating joints at a uniform random orientation and a position with
 /// coordinates uniform in [-unlimited_range, unlimited_range]. Deterministic for a given generator state.
+/// Throws std::invalid_argument unless unlimited_range is finite and >= 0.
 Eigen::VectorXd RandomConfiguration(const Model& model, std::mt19937& rng, double unlimited_range = 3.141592653589793);
 
-/// True if every limited coordinate of q lies within its limits enlarged by `tolerance`.
+/// True if every limited coordinate of q lies within its limits enlarged by `tolerance` (>= 0; NaN throws).
 bool IsWithinPositionLimits(const Model& model, const Eigen::Ref<const Eigen::VectorXd>& q, double tolerance = 0.0);
 
 /// Per coordinate, how far q lies outside its position limits (0 inside; positive above the upper limit,

@@ -1,9 +1,25 @@
 #include <cairn/multibody/data.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace cairn::multibody {
+namespace {
+
+// Runs before any buffer is sized.
+int CheckedNv(const Model& model) {
+  if (model.nv() > kMaxDataVelocities) {
+    throw std::invalid_argument("model '" + model.name() + "' has " + std::to_string(model.nv()) +
+                                " velocity coordinates; a Data serves at most " + std::to_string(kMaxDataVelocities) +
+                                " (kMaxDataVelocities), since it holds dense nv x nv matrices");
+  }
+  return model.nv();
+}
+
+}  // namespace
 
 Data::Data(const Model& model)
-    : nq(model.nq()),
+    : nq((CheckedNv(model), model.nq())),
       nv(model.nv()),
       X_parent(static_cast<std::size_t>(model.num_bodies())),
       X_world(static_cast<std::size_t>(model.num_bodies())),

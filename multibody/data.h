@@ -10,12 +10,18 @@
 
 namespace cairn::multibody {
 
+/// Most velocity coordinates a Data serves: 10,000. Data holds three dense nv x nv matrices (the mass matrix,
+/// its factor and the gravity-torque derivative), 2.4 GB at this limit, so a larger model is refused before
+/// anything is allocated rather than exhausting memory.
+inline constexpr int kMaxDataVelocities = 10000;
+
 /// The workspace of the multibody algorithms for one Model: every buffer is sized once here, so the
 /// algorithms never allocate. Use one Data per thread. It is a plain struct because the free-function
 /// algorithms fill it and callers read the results they asked for (Pinocchio's layout); each field says
 /// which algorithm writes it. Per-body vectors are indexed by body index (entry 0 is the world).
 struct Data {
-  /// Sizes every buffer for `model`.
+  /// Sizes every buffer for `model`; throws std::invalid_argument if the model has more than kMaxDataVelocities
+  /// velocity coordinates.
   explicit Data(const Model& model);
 
   /// nq of the model this workspace was made for (the algorithms check it).

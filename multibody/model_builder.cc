@@ -2,31 +2,27 @@
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 #include <Eigen/Eigenvalues>
 
 #include <cairn/common/cairn_assert.h>
+#include <cairn/common/number_text.h>
 #include <cairn/common/text_suggestions.h>
 
 namespace cairn::multibody {
 namespace {
 
 std::string Format(const Eigen::Vector3d& v) {
-  std::ostringstream out;
-  out << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
-  return out.str();
+  return "(" + FormatShort(v.x()) + " " + FormatShort(v.y()) + " " + FormatShort(v.z()) + ")";
 }
 
 void CheckInertia(const Body& body) {
   const double mass = body.inertia.mass();
   if (!(mass >= 0.0) || !std::isfinite(mass)) {
-    std::ostringstream out;
-    out << "body '" << body.name << "': mass " << mass
-        << " is negative or not finite; give a finite mass >= 0 (0 for a massless frame link)";
-    throw std::invalid_argument(out.str());
+    throw std::invalid_argument("body '" + body.name + "': mass " + FormatShort(mass) +
+                                " is negative or not finite; give a finite mass >= 0 (0 for a massless frame link)");
   }
   const Eigen::Matrix3d I = body.inertia.InertiaAboutCom();
   if (!I.allFinite() || !body.inertia.first_moment().allFinite()) {
@@ -36,15 +32,26 @@ void CheckInertia(const Body& body) {
   if ((I - I.transpose()).cwiseAbs().maxCoeff() > 1e-12 * (1.0 + I.cwiseAbs().maxCoeff())) {
     throw std::invalid_argument("body '" + body.name + "': rotational inertia is not symmetric");
   }
+  // Ascending principal moments.
   const Eigen::Vector3d eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly).eigenvalues();
   const double scale = std::max(1.0, eig.cwiseAbs().maxCoeff());
   const bool ok = mass > 0.0 ? eig.minCoeff() > 0.0 : eig.minCoeff() >= -1e-12 * scale;
   if (!ok) {
-    std::ostringstream out;
-    out << "body '" << body.name << "': rotational inertia about the centre of mass is not positive "
-        << (mass > 0.0 ? "definite" : "semi-definite") << " (eigenvalues " << Format(eig) << ", mass " << mass
-        << "); give ixx, iyy, izz > 0 with |ixy|, |ixz|, |iyz| small enough (e.g. those of a box of that mass)";
-    throw std::invalid_argument(out.str());
+    throw std::invalid_argument("body '" + body.name + "': rotational inertia about the centre of mass is not positive " +
+                                (mass > 0.0 ? "definite" : "semi-definite") + " (principal moments " + Format(eig) +
+                                ", mass " + FormatShort(mass) +
+                                "); give ixx, iyy, izz > 0 with |ixy|, |ixz|, |iyz| small enough (e.g. those of a box "
+                                "of that mass)");
+  }
+  // No rigid body has one principal moment above the sum of the other two (each is a sum of two of the three
+  // second moments of its mass distribution). The slack allows for moments rounded to a few digits in a file.
+  const double slack = kInertiaTriangleTolerance * eig.maxCoeff();
+  if (eig[0] + eig[1] < eig[2] - slack) {
+    throw std::invalid_argument("body '" + body.name + "': principal moments of inertia " + Format(eig) +
+                                " violate the triangle inequality (" + FormatShort(eig[0]) + " + " +
+                                FormatShort(eig[1]) + " < " + FormatShort(eig[2]) +
+                                "), which no rigid body does; check ixx, iyy, izz and the products of inertia "
+                                "(each moment must be at most the sum of the other two)");
   }
 }
 
@@ -57,17 +64,16 @@ void CheckGeometry(const std::string& body, const Geometry& g) {
       if (!(g.size.minCoeff() > 0.0) || !g.size.allFinite()) fail("box size " + Format(g.size) + " must be > 0");
       break;
     case GeometryType::kSphere:
-      if (!(g.radius > 0.0) || !std::isfinite(g.radius)) fail("radius " + std::to_string(g.radius) + " must be > 0");
+      if (!(g.radius > 0.0) || !std::isfinite(g.radius)) fail("radius " + FormatShort(g.radius) + " must be > 0");
       break;
     case GeometryType::kCylinder:
     case GeometryType::kCapsule:
-      if (!(g.radius > 0.0) || !std::isfinite(g.radius)) fail("radius " + std::to_string(g.radius) + " must be > 0");
-      if (!(g.length >= 0.0) || !std::isfinite(g.length)) {
-        fail("length " + std::to_string(g.length) + " must be >= 0");
-      }
+      if (!(g.radius > 0.0) || !std::isfinite(g.radius)) fail("radius " + FormatShort(g.radius) + " must be > 0");
+      if (!(g.length >= 0.0) || !std::isfinite(g.length)) fail("length " + FormatShort(g.length) + " must be >= 0");
       break;
     case GeometryType::kMesh:
       if (g.mesh_path.empty()) fail("mesh has no file name; set <mesh filename=...>");
+      if (!g.scale.allFinite()) fail("mesh scale " + Format(g.scale) + " must be finite");
       break;
   }
 }
@@ -84,6 +90,8 @@ ModelBuilder::ModelBuilder(std::string model_name) {
   universe.type = JointType::kFixed;
   universe.parent = -1;
   model_.joints_.push_back(universe);
+  body_names_.insert(world.name);
+  joint_names_.insert(universe.name);
 }
 
 void ModelBuilder::CheckBodyIndex(int body, const char* what) const {
@@ -105,17 +113,17 @@ int ModelBuilder::GetBodyIndex(const std::string& name) const {
 
 int ModelBuilder::AddBody(int parent, Body body, Joint joint) {
   CheckBodyIndex(parent, ("AddBody('" + body.name + "')").c_str());
+  if (num_bodies() > kMaxModelBodies) {
+    throw std::invalid_argument("AddBody('" + body.name + "'): the model already has " +
+                                std::to_string(kMaxModelBodies) + " bodies besides the world, the most a model may have (kMaxModelBodies)");
+  }
   if (body.name.empty()) throw std::invalid_argument("AddBody: the body needs a name");
   if (joint.name.empty()) throw std::invalid_argument("AddBody('" + body.name + "'): its joint needs a name");
-  for (const Body& b : model_.bodies_) {
-    if (b.name == body.name) {
-      throw std::invalid_argument("body name '" + body.name + "' is used twice; body names must be unique");
-    }
+  if (body_names_.count(body.name) > 0) {
+    throw std::invalid_argument("body name '" + body.name + "' is used twice; body names must be unique");
   }
-  for (const Joint& j : model_.joints_) {
-    if (j.name == joint.name) {
-      throw std::invalid_argument("joint name '" + joint.name + "' is used twice; joint names must be unique");
-    }
+  if (joint_names_.count(joint.name) > 0) {
+    throw std::invalid_argument("joint name '" + joint.name + "' is used twice; joint names must be unique");
   }
   CheckInertia(body);
   for (const Geometry& g : body.collisions) CheckGeometry(body.name, g);
@@ -145,17 +153,19 @@ int ModelBuilder::AddBody(int parent, Body body, Joint joint) {
           joint.axis_sign = joint.axis[k];
         }
       }
-      if (std::isnan(joint.lower_limit) || std::isnan(joint.upper_limit) || joint.lower_limit > joint.upper_limit) {
-        std::ostringstream out;
-        out << "joint '" << joint.name << "': lower limit " << joint.lower_limit << " exceeds upper limit "
-            << joint.upper_limit << "; swap them";
-        throw std::invalid_argument(out.str());
+      if (std::isnan(joint.lower_limit) || std::isnan(joint.upper_limit)) {
+        throw std::invalid_argument("joint '" + joint.name + "': position limits [" + FormatShort(joint.lower_limit) +
+                                    ", " + FormatShort(joint.upper_limit) +
+                                    "] must be numbers (use -infinity and infinity for none)");
+      }
+      if (joint.lower_limit > joint.upper_limit) {
+        throw std::invalid_argument("joint '" + joint.name + "': lower limit " + FormatShort(joint.lower_limit) +
+                                    " exceeds upper limit " + FormatShort(joint.upper_limit) + "; swap them");
       }
       if (!(joint.velocity_limit >= 0.0) || !(joint.effort_limit >= 0.0)) {
-        std::ostringstream out;
-        out << "joint '" << joint.name << "': velocity limit " << joint.velocity_limit << " and effort limit "
-            << joint.effort_limit << " must be >= 0 (use infinity for none)";
-        throw std::invalid_argument(out.str());
+        throw std::invalid_argument("joint '" + joint.name + "': velocity limit " + FormatShort(joint.velocity_limit) +
+                                    " and effort limit " + FormatShort(joint.effort_limit) +
+                                    " must be >= 0 (use infinity for none)");
       }
       break;
     }
@@ -171,6 +181,8 @@ int ModelBuilder::AddBody(int parent, Body body, Joint joint) {
   joint.idx_v = model_.nv_;
   model_.nq_ += joint.nq;
   model_.nv_ += joint.nv;
+  body_names_.insert(body.name);
+  joint_names_.insert(joint.name);
   model_.bodies_.push_back(std::move(body));
   model_.joints_.push_back(std::move(joint));
   return num_bodies() - 1;
@@ -266,6 +278,8 @@ Model ModelBuilder::Build() {
   Model out = std::move(model_);
   model_ = Model();
   extra_frames_.clear();
+  body_names_.clear();
+  joint_names_.clear();
   return out;
 }
 

@@ -1,12 +1,22 @@
 #pragma once
 
+#include <set>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include <cairn/multibody/model.h>
 
 namespace cairn::multibody {
+
+/// Most bodies a model may have besides the world: 100,000. Real robots have a few hundred at most; the bound
+/// keeps a generated or corrupt file from building a model that no Data (kMaxDataVelocities) could serve.
+inline constexpr int kMaxModelBodies = 100000;
+
+/// Relative slack of the triangle-inequality check on principal moments of inertia: a body is refused when
+/// I1 + I2 < I3 - kInertiaTriangleTolerance * I3 (I1 <= I2 <= I3), which allows moments rounded in a file.
+inline constexpr double kInertiaTriangleTolerance = 1e-3;
 
 /// Assembles a Model body by body, checking each piece as it is added, then freezes it with Build().
 ///
@@ -21,7 +31,9 @@ class ModelBuilder {
   /// Adds `body` attached to body `parent` through `joint` (its `parent`, `idx_q`, `idx_v`, `nq`, `nv` fields
   /// are filled in here). Returns the new body's index. Throws std::invalid_argument on a duplicate body or
   /// joint name, an unknown parent, a zero axis, a negative or non-finite mass, an inertia that is not
-  /// positive definite (positive semi-definite for a massless body), or crossed limits.
+  /// positive definite (positive semi-definite for a massless body) or whose principal moments violate the
+  /// triangle inequality, NaN or crossed limits, negative velocity or effort limits, or a model that already
+  /// has kMaxModelBodies bodies.
   int AddBody(int parent, Body body, Joint joint);
 
   /// Adds a collision shape to body `body` (checks the shape's dimensions).
@@ -46,6 +58,9 @@ class ModelBuilder {
 
   Model model_;
   std::vector<Frame> extra_frames_;
+  // Names taken so far, so that adding a body costs O(log n) rather than a scan of all bodies.
+  std::set<std::string> body_names_;
+  std::set<std::string> joint_names_;
 };
 
 }  // namespace cairn::multibody

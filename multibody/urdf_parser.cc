@@ -6,15 +6,15 @@
 #include <fstream>
 #include <limits>
 #include <mutex>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include <console_bridge/console.h>
-#include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/model_builder.h>
+#include <cairn/multibody/urdf_xml_check.h>
 
 namespace cairn::multibody {
 namespace {
@@ -49,6 +49,27 @@ Pose ToPose(const urdf::Pose& pose) {
   return Pose(q.normalized().toRotationMatrix(), Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z));
 }
 
+// urdfdom's links own their children through shared pointers, so destroying the model of a long chain
+// releases one link inside the destructor of the previous: a recursion as deep as the chain. Cutting the
+// links apart first lets the link map free them one at a time.
+class TreeDismantler {
+ public:
+  explicit TreeDismantler(urdf::ModelInterface* model) : model_(model) {}
+  TreeDismantler(const TreeDismantler&) = delete;
+  TreeDismantler& operator=(const TreeDismantler&) = delete;
+  ~TreeDismantler() {
+    for (auto& entry : model_->links_) {
+      if (!entry.second) continue;
+      entry.second->child_links.clear();
+      entry.second->child_joints.clear();
+      entry.second->parent_joint.reset();
+    }
+  }
+
+ private:
+  urdf::ModelInterface* model_;
+};
+
 class UrdfReader {
  public:
   UrdfReader(const std::string& source, const std::string& base_directory, const UrdfOptions& options)
@@ -56,35 +77,10 @@ class UrdfReader {
 
   [[noreturn]] void Fail(const std::string& what) const { throw std::runtime_error(source_ + ": " + what); }
 
-  // urdfdom reports malformed XML without a position and reads an unparsable number (e.g. "nan") as 0, so
-  // the raw text is checked first.
-  void PreCheck(const std::string& xml) const {
-    TiXmlDocument document;
-    document.Parse(xml.c_str());
-    if (document.Error()) {
-      Fail("malformed XML at line " + std::to_string(document.ErrorRow()) + ", column " +
-           std::to_string(document.ErrorCol()) + ": " + document.ErrorDesc());
-    }
-    const TiXmlElement* robot = document.FirstChildElement("robot");
-    if (robot == nullptr) Fail("no <robot> element; a URDF file's root element is <robot name=...>");
-    for (const TiXmlElement* link = robot->FirstChildElement("link"); link != nullptr;
-         link = link->NextSiblingElement("link")) {
-      const char* link_name = link->Attribute("name");
-      const TiXmlElement* inertial = link->FirstChildElement("inertial");
-      const TiXmlElement* mass = inertial == nullptr ? nullptr : inertial->FirstChildElement("mass");
-      const char* value = mass == nullptr ? nullptr : mass->Attribute("value");
-      if (value == nullptr) continue;
-      char* end = nullptr;
-      const double m = std::strtod(value, &end);
-      if (end == value || std::isnan(m) || m < 0.0 || !std::isfinite(m)) {
-        Fail(std::string("link '") + (link_name ? link_name : "?") + "' (line " + std::to_string(mass->Row()) +
-             "): <mass value=\"" + value + "\"> is negative, NaN or not a number; give a mass >= 0 in kilograms");
-      }
-    }
-  }
-
   Model Read(const std::string& xml) {
-    PreCheck(xml);
+    const internal::UrdfXmlCheck check(source_);
+    check.CheckSizeAndNesting(xml);
+    check.CheckDocument(xml);
     urdf::ModelInterfaceSharedPtr urdf_model;
     {
       std::lock_guard<std::mutex> lock(ConsoleMutex());
@@ -103,6 +99,7 @@ class UrdfReader {
              " (check the XML syntax and that every joint's <parent> and <child> links are defined)");
       }
     }
+    const TreeDismantler dismantle_at_exit(urdf_model.get());
     ModelBuilder builder(urdf_model->getName());
     const urdf::LinkConstSharedPtr root = urdf_model->getRoot();
     if (!root) Fail("the URDF has no root link");
@@ -111,12 +108,12 @@ class UrdfReader {
         Fail("root link is 'world', so the robot is fixed by the file itself; parse it without floating_base");
       }
       AddGeometry(builder, *root, 0);
-      for (const urdf::LinkSharedPtr& child : SortedChildren(*root)) AddSubtree(builder, *child, 0);
+      AddTree(builder, *root, 0);
     } else {
       Joint joint;
       joint.name = options_.floating_base ? options_.floating_joint_name : root->name + "_to_world";
       joint.type = options_.floating_base ? JointType::kFloating : JointType::kFixed;
-      AddLink(builder, *root, 0, joint);
+      AddTree(builder, *root, AddLink(builder, *root, 0, joint));
     }
     try {
       return builder.Build();
@@ -131,7 +128,24 @@ class UrdfReader {
     return link.child_links;
   }
 
-  void AddSubtree(ModelBuilder& builder, const urdf::Link& link, int parent_body) {
+  // Adds the links below `link` (already body `body`) depth-first, children in SortedChildren order, with an
+  // explicit stack: a chain of thousands of links would overflow the call stack if this recursed.
+  void AddTree(ModelBuilder& builder, const urdf::Link& link, int body) {
+    std::vector<std::pair<const urdf::Link*, int>> pending;
+    auto push_children = [&](const urdf::Link& parent, int parent_body) {
+      const std::vector<urdf::LinkSharedPtr> children = SortedChildren(parent);
+      for (auto it = children.rbegin(); it != children.rend(); ++it) pending.emplace_back(it->get(), parent_body);
+    };
+    push_children(link, body);
+    while (!pending.empty()) {
+      const auto [child, parent_body] = pending.back();
+      pending.pop_back();
+      push_children(*child, AddJointAndLink(builder, *child, parent_body));
+    }
+  }
+
+  // Adds `link` with its parent joint below body `parent_body`; returns its body index.
+  int AddJointAndLink(ModelBuilder& builder, const urdf::Link& link, int parent_body) {
     const urdf::JointSharedPtr& uj = link.parent_joint;
     if (!uj) Fail("link '" + link.name + "' has no parent joint");
     Joint joint;
@@ -169,24 +183,23 @@ class UrdfReader {
         joint.lower_limit = uj->limits->lower;
         joint.upper_limit = uj->limits->upper;
       }
-      // URDF writes 0 for "not given"; only a positive value is a limit.
-      if (uj->limits->velocity > 0.0) joint.velocity_limit = uj->limits->velocity;
-      if (uj->limits->effort > 0.0) joint.effort_limit = uj->limits->effort;
+      // URDF writes 0 for "not given"; a negative value was refused by the XML check (and would be by the
+      // builder).
+      if (uj->limits->velocity != 0.0) joint.velocity_limit = uj->limits->velocity;
+      if (uj->limits->effort != 0.0) joint.effort_limit = uj->limits->effort;
     }
-    AddLink(builder, link, parent_body, joint);
+    return AddLink(builder, link, parent_body, joint);
   }
 
-  void AddLink(ModelBuilder& builder, const urdf::Link& link, int parent_body, const Joint& joint) {
+  int AddLink(ModelBuilder& builder, const urdf::Link& link, int parent_body, const Joint& joint) {
     Body body;
     body.name = link.name;
     if (link.inertial) {
       const urdf::Inertial& in = *link.inertial;
       body.has_inertial = true;
-      if (std::isnan(in.mass) || in.mass < 0.0) {
-        std::ostringstream out;
-        out << "link '" << link.name << "': <mass value=\"" << in.mass
-            << "\"> is negative or NaN; give a mass >= 0 in kilograms";
-        Fail(out.str());
+      if (!(in.mass >= 0.0) || !std::isfinite(in.mass)) {
+        Fail("link '" + link.name + "': <mass value=\"" + FormatShort(in.mass) +
+             "\"> is negative or not finite; give a mass >= 0 in kilograms");
       }
       Eigen::Matrix3d I;
       I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
@@ -201,7 +214,7 @@ class UrdfReader {
       Fail(std::string(e.what()) + " (link '" + link.name + "', joint '" + joint.name + "')");
     }
     AddGeometry(builder, link, index);
-    for (const urdf::LinkSharedPtr& child : SortedChildren(link)) AddSubtree(builder, *child, index);
+    return index;
   }
 
   Geometry ToGeometry(const urdf::Link& link, const urdf::GeometrySharedPtr& geometry, const urdf::Pose& origin,
@@ -297,15 +310,30 @@ class UrdfReader {
 }  // namespace
 
 Model ParseUrdfFile(const std::string& path, const UrdfOptions& options) {
+  std::error_code error;
+  if (fs::is_directory(path, error)) {
+    throw std::runtime_error(path + ": is a directory, expected a URDF file; give the path of the .urdf file in it");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw std::runtime_error(path + ": cannot open the URDF file; check the path (relative paths are relative to '" +
                              fs::current_path().string() + "')");
   }
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read at most one byte more than the limit, so that a huge file or an endless one (a device, a pipe) is
+  // refused without reading it all.
+  std::string text;
+  char buffer[1 << 16];
+  while (in && text.size() <= kMaxUrdfBytes) {
+    in.read(buffer, sizeof(buffer));
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) throw std::runtime_error(path + ": reading the URDF file failed");
+  if (text.size() > kMaxUrdfBytes) {
+    throw std::runtime_error(path + ": the file is larger than " + std::to_string(kMaxUrdfBytes) +
+                             " bytes (64 MiB, kMaxUrdfBytes), the most a URDF may have; check that this is the URDF file");
+  }
   const std::string directory = fs::absolute(fs::path(path)).parent_path().string();
-  return ParseUrdfString(text.str(), directory, options, path);
+  return ParseUrdfString(text, directory, options, path);
 }
 
 Model ParseUrdfString(const std::string& xml, const std::string& base_directory, const UrdfOptions& options,

@@ -7,6 +7,7 @@
 
 #include <cairn/multibody/model.h>
 #include <cairn/multibody/package_map.h>
+#include <cairn/multibody/urdf_xml_check.h>
 
 namespace cairn::multibody {
 
@@ -24,12 +25,16 @@ struct UrdfOptions {
   bool check_mesh_files = true;
 };
 
-/// Parses the URDF file at `path`. Every error (unreadable file, malformed XML, a joint naming a missing link,
-/// a kinematic loop, negative or NaN mass, an inertia that is not positive definite, a zero joint axis, a
-/// mimic or planar joint, a missing mesh file or unknown package) throws std::runtime_error whose message
-/// starts with the file name and names the offending element.
+/// Parses the URDF file at `path`. Every error (a directory or unreadable file, a file over kMaxUrdfBytes,
+/// malformed XML or elements nested deeper than kMaxUrdfNestingDepth, a numeric attribute that is not exactly
+/// its count of finite numbers, a joint naming a missing link, a kinematic loop, a negative mass, an inertia
+/// that is not positive definite or violates the triangle inequality, a shape size <= 0, a negative effort or
+/// velocity limit, a lower limit above the upper, a zero joint axis, a mimic or planar joint, a missing mesh
+/// file or unknown package, more than kMaxModelBodies links) throws std::runtime_error whose message starts
+/// with the file name and names the offending link or joint and value.
 ///
-/// Links become bodies, in depth-first order from the root (children in joint-name order). A `continuous`
+/// Links become bodies, in depth-first order from the root (children in joint-name order); the tree is walked
+/// without recursion, so a chain of any length up to kMaxModelBodies loads. A `continuous`
 /// joint is an unlimited revolute joint with one coordinate (the angle). A collision `<cylinder>` whose
 /// collision `name` starts with "capsule" is read as a capsule (URDF has no capsule element): radius r and
 /// cylinder length l between the centres of its hemispherical caps.

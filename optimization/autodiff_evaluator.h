@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+// Eigen 3.4's AutoDiff module does not include Eigen/Core itself.
+#include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
 #include "cairn/optimization/evaluator.h"

@@ -9,6 +9,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/text_suggestions.h"
 #include "cairn/optimization/program_assembly.h"
 
@@ -40,6 +41,22 @@ int Integer(const std::string& name, const SolverOptions::Value& value) {
                               SolverOptions::ToString(value) + "; pass an integer.");
 }
 
+int AtLeastOne(const std::string& name, int value) {
+  if (value < 1) {
+    throw std::invalid_argument("LeastSquaresSolver: option '" + name + "' = " + std::to_string(value) +
+                                " must be >= 1.");
+  }
+  return value;
+}
+
+double NonNegative(const std::string& name, double value, bool strict) {
+  if ((strict ? !(value > 0.0) : !(value >= 0.0)) || !std::isfinite(value)) {
+    throw std::invalid_argument("LeastSquaresSolver: option '" + name + "' = " + FormatShort(value) +
+                                " must be finite and " + (strict ? "> 0." : ">= 0."));
+  }
+  return value;
+}
+
 Settings ParseOptions(const SolverOptions::OptionMap& options) {
   static const std::vector<std::string> kNames = {
       "algorithm",        "max_iterations",  "gradient_tolerance", "step_tolerance",
@@ -54,19 +71,19 @@ Settings ParseOptions(const SolverOptions::OptionMap& options) {
       }
       s.gauss_newton = *text == "gauss_newton";
     } else if (name == "max_iterations") {
-      s.max_iterations = Integer(name, value);
+      s.max_iterations = AtLeastOne(name, Integer(name, value));
     } else if (name == "max_outer_iterations") {
-      s.max_outer_iterations = Integer(name, value);
+      s.max_outer_iterations = AtLeastOne(name, Integer(name, value));
     } else if (name == "gradient_tolerance") {
-      s.gradient_tolerance = Number(name, value);
+      s.gradient_tolerance = NonNegative(name, Number(name, value), false);
     } else if (name == "step_tolerance") {
-      s.step_tolerance = Number(name, value);
+      s.step_tolerance = NonNegative(name, Number(name, value), false);
     } else if (name == "function_tolerance") {
-      s.function_tolerance = Number(name, value);
+      s.function_tolerance = NonNegative(name, Number(name, value), false);
     } else if (name == "initial_damping") {
-      s.initial_damping = Number(name, value);
+      s.initial_damping = NonNegative(name, Number(name, value), true);
     } else if (name == "constraint_tol") {
-      s.constraint_tol = Number(name, value);
+      s.constraint_tol = NonNegative(name, Number(name, value), false);
     } else {
       const std::vector<std::string> closest = ClosestNames(name, kNames, 1);
       throw std::invalid_argument("LeastSquaresSolver: unknown option '" + name + "'" +
@@ -351,7 +368,7 @@ SolverResult LeastSquaresSolver::DoSolve(const MathematicalProgram& prog, const 
   InnerStatus inner = InnerStatus::kConverged;
   double violation = 0.0;
   int outer = 0;
-  for (; outer < std::max(1, settings.max_outer_iterations); ++outer) {
+  for (; outer < settings.max_outer_iterations; ++outer) {
     inner = Minimise(&ne, settings, lower, upper, &x, &result.iterations);
     if (inner != InnerStatus::kConverged || ne.num_equalities() == 0) break;
     const double previous = violation;

@@ -17,6 +17,8 @@ namespace cairn::optimization {
 /// (projected-gradient infinity norm, default 1e-10), step_tolerance (relative, default 1e-12),
 /// function_tolerance (relative decrease, default 1e-14), initial_damping (times max diag(J'J), default
 /// 1e-4), constraint_tol (equality violation, default 1e-9), max_outer_iterations (integer, default 30).
+/// Ranges (std::invalid_argument otherwise): the iteration counts >= 1, initial_damping > 0, the tolerances and
+/// constraint_tol >= 0, every number finite.
 ///
 /// The Marquardt damping scales diag(J'J), so the method is invariant to variable scaling. The equality
 /// multipliers are reported in constraint_duals (Ipopt's sign convention); there are no bound duals.

@@ -11,6 +11,7 @@
 
 #include <nlopt.hpp>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/text_suggestions.h"
 #include "cairn/optimization/program_assembly.h"
 
@@ -229,28 +230,53 @@ int AsInteger(const std::string& option, const SolverOptions::Value& value) {
                               SolverOptions::ToString(value) + "; pass an integer.");
 }
 
+// Each option's range, so that a value NLopt would read differently (a maxeval <= 0 as no limit, a negative
+// seed wrapped to a huge unsigned, a negative tolerance as none) is an error rather than a surprise.
+int AtLeast(const std::string& option, int value, int lowest, const char* why) {
+  if (value < lowest) {
+    throw std::invalid_argument("NloptSolver: option '" + option + "' = " + std::to_string(value) + " must be >= " +
+                                std::to_string(lowest) + " (" + why + ").");
+  }
+  return value;
+}
+
+double Tolerance(const std::string& option, double value) {
+  if (!(value >= 0.0) || !std::isfinite(value)) {
+    throw std::invalid_argument("NloptSolver: option '" + option + "' = " + FormatShort(value) +
+                                " must be finite and >= 0" +
+                                (option == "constraint_tol" ? "." : " (0 turns the criterion off)."));
+  }
+  return value;
+}
+
 void Apply(const std::string& name, const SolverOptions::Value& value, StageSettings* s) {
   if (name == "maxeval") {
-    s->maxeval = AsInteger(name, value);
+    s->maxeval = AtLeast(name, AsInteger(name, value), 1,
+                         "NLopt reads 0 or less as no limit, and a global stage never stops without one");
   } else if (name == "population") {
-    s->population = AsInteger(name, value);
+    s->population = AtLeast(name, AsInteger(name, value), 0, "0 lets NLopt choose");
   } else if (name == "seed") {
-    s->seed = AsInteger(name, value);
+    s->seed = AtLeast(name, AsInteger(name, value), 0, "NLopt's seed is unsigned");
   } else if (name == "maxtime") {
     s->maxtime = AsNumber(name, value);
+    if (!(s->maxtime > 0.0)) {
+      throw std::invalid_argument("NloptSolver: option 'maxtime' = " + FormatShort(s->maxtime) +
+                                  " must be > 0 seconds (NLopt reads 0 or less as no limit; leave it out for none).");
+    }
   } else if (name == "xtol_rel") {
-    s->xtol_rel = AsNumber(name, value);
+    s->xtol_rel = Tolerance(name, AsNumber(name, value));
   } else if (name == "xtol_abs") {
-    s->xtol_abs = AsNumber(name, value);
+    s->xtol_abs = Tolerance(name, AsNumber(name, value));
   } else if (name == "ftol_rel") {
-    s->ftol_rel = AsNumber(name, value);
+    s->ftol_rel = Tolerance(name, AsNumber(name, value));
   } else if (name == "ftol_abs") {
-    s->ftol_abs = AsNumber(name, value);
+    s->ftol_abs = Tolerance(name, AsNumber(name, value));
   } else if (name == "stopval") {
     s->stopval = AsNumber(name, value);
+    if (std::isnan(s->stopval)) throw std::invalid_argument("NloptSolver: option 'stopval' is NaN; give a number.");
     s->user_stopval = true;
   } else if (name == "constraint_tol") {
-    s->constraint_tol = AsNumber(name, value);
+    s->constraint_tol = Tolerance(name, AsNumber(name, value));
   } else {
     const std::vector<std::string> valid(std::begin(kOptionNames), std::end(kOptionNames));
     const std::vector<std::string> closest = ClosestNames(name, valid, 1);

@@ -27,6 +27,8 @@ namespace cairn::optimization {
 /// "<STAGE>.<name>" (e.g.
 /// "GN_ORIG_DIRECT.maxeval") to one stage only. Defaults: local stages xtol_rel = 1e-10, ftol_rel = 1e-14,
 /// maxeval = 100000; global stages maxeval = 2000, because DIRECT-type searches never stop on their own.
+/// Ranges (std::invalid_argument otherwise): maxeval >= 1, population >= 0, seed >= 0, maxtime > 0, the
+/// tolerances and constraint_tol finite and >= 0, stopval not NaN.
 ///
 /// Status (of the last stage): a final point that violates the constraints by more than constraint_tol is
 /// kInfeasible; otherwise converged (ftol/xtol/stopval) and round-off-limited endings are kSolved (SLSQP ends

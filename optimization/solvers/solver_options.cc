@@ -1,7 +1,10 @@
 #include "cairn/optimization/solvers/solver_options.h"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
+
+#include "cairn/common/number_text.h"
 
 namespace cairn::optimization {
 
@@ -23,6 +26,10 @@ void SolverOptions::Set(const std::string& solver, const std::string& option, in
 
 void SolverOptions::Set(const std::string& solver, const std::string& option, double value) {
   CheckNames(solver, option);
+  if (std::isnan(value)) {
+    throw std::invalid_argument("SolverOptions::Set('" + solver + "', '" + option +
+                                "'): the value is NaN, which no option accepts; give a number.");
+  }
   options_[solver][option] = value;
 }
 
@@ -52,7 +59,7 @@ std::string SolverOptions::ToString(const Value& value) {
   if (const int* i = std::get_if<int>(&value)) {
     out << *i;
   } else if (const double* d = std::get_if<double>(&value)) {
-    out << *d;
+    out << FormatShort(*d);
   } else {
     out << "'" << std::get<std::string>(value) << "'";
   }

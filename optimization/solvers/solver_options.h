@@ -22,7 +22,8 @@ class SolverOptions {
 
   /// Sets an integer option.
   void Set(const std::string& solver, const std::string& option, int value);
-  /// Sets a numeric option.
+  /// Sets a numeric option; throws std::invalid_argument for NaN (infinities are passed on: some options take
+  /// them, and each solver checks the range of its own).
   void Set(const std::string& solver, const std::string& option, double value);
   /// Sets a string option.
   void Set(const std::string& solver, const std::string& option, const std::string& value);

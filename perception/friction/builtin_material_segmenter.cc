@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -9,13 +10,15 @@
 #include <utility>
 
 #include <opencv2/imgproc.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include "cairn/common/atomic_file.h"
+#include "cairn/common/internal/yaml_reader.h"
 #include "cairn/common/number_text.h"
 
 namespace cairn::perception {
 namespace {
+
+using cairn::internal::YamlReader;
 
 constexpr const char* kFormat = "cairn_builtin_material_segmenter";
 constexpr int kVersion = 1;
@@ -294,34 +297,24 @@ void EmitMatrix(YAML::Emitter& out, const char* key, const Eigen::MatrixXf& m) {
   out << YAML::EndSeq << YAML::EndMap;
 }
 
-[[noreturn]] void Corrupt(const std::string& path, const std::string& what) {
-  throw std::runtime_error("BuiltinMaterialSegmenter::Load: '" + path + "' " + what +
-                           " Re-create it with `cairn friction-train --out " + path + "`.");
-}
-
-YAML::Node Require(const YAML::Node& node, const char* key, const std::string& path) {
-  const YAML::Node child = node[key];
-  if (!child) Corrupt(path, std::string("has no key '") + key + "'.");
-  return child;
-}
-
-Eigen::MatrixXf ReadMatrix(const YAML::Node& root, const char* key, const std::string& path, Eigen::Index rows,
-                           Eigen::Index cols) {
-  const YAML::Node node = Require(root, key, path);
-  const auto r = node["rows"] ? node["rows"].as<Eigen::Index>() : -1;
-  const auto c = node["cols"] ? node["cols"].as<Eigen::Index>() : -1;
-  const YAML::Node data = node["data"];
-  if (r != rows || c != cols || !data || !data.IsSequence() ||
-      static_cast<Eigen::Index>(data.size()) != rows * cols) {
-    Corrupt(path, std::string("has a malformed '") + key + "': expected " + std::to_string(rows) + "x" +
-                      std::to_string(cols) + " with " + std::to_string(rows * cols) + " values, got rows " +
-                      std::to_string(r) + ", cols " + std::to_string(c) + " and " +
-                      std::to_string(data ? data.size() : 0) + " values.");
+Eigen::MatrixXf ReadMatrix(const YamlReader& yaml, const char* key, Eigen::Index rows, Eigen::Index cols) {
+  const std::string where = std::string("'") + key + "'";
+  const YAML::Node node = yaml.Require(yaml.root(), key, "the model");
+  constexpr long long kMaxIndex = std::numeric_limits<int>::max();
+  const long long r = yaml.Integer(node, "rows", where, 0, kMaxIndex, -1);
+  const long long c = yaml.Integer(node, "cols", where, 0, kMaxIndex, -1);
+  const YAML::Node data = YamlReader::Has(node, "data") ? node["data"] : YAML::Node();
+  if (r != rows || c != cols || !data.IsSequence() || static_cast<Eigen::Index>(data.size()) != rows * cols) {
+    yaml.Fail(node, std::string("the model has a malformed '") + key + "': expected " + std::to_string(rows) + "x" +
+                        std::to_string(cols) + " with " + std::to_string(rows * cols) + " values, got rows " +
+                        std::to_string(r) + ", cols " + std::to_string(c) + " and " +
+                        std::to_string(data.IsSequence() ? data.size() : 0) + " values.");
   }
   Eigen::MatrixXf m(rows, cols);
   for (Eigen::Index i = 0; i < rows * cols; ++i) {
-    const float v = data[static_cast<std::size_t>(i)].as<float>();
-    if (!std::isfinite(v)) Corrupt(path, std::string("has a non-finite value in '") + key + "'.");
+    const YAML::Node value = data[static_cast<std::size_t>(i)];
+    const float v = static_cast<float>(yaml.AsNumber(value, key));
+    if (!std::isfinite(v)) yaml.Fail(value, std::string("'") + key + "' has a value outside the range of float.");
     m(i / cols, i % cols) = v;
   }
   return m;
@@ -469,55 +462,54 @@ void BuiltinMaterialSegmenter::Save(const std::string& path) const {
 }
 
 BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Load(const std::string& path) {
-  YAML::Node root;
+  // Every problem is a file that Save() did not write (or that was edited): say how to make a good one.
+  const std::string remedy = " Re-create it with `cairn friction-train --out " + path + "`.";
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw std::runtime_error("BuiltinMaterialSegmenter::Load: cannot open '" + path +
-                             "'; check the path or train a model with `cairn friction-train --out " + path + "`.");
-  } catch (const YAML::Exception& error) {
-    Corrupt(path, "is not valid YAML (line " + std::to_string(error.mark.line + 1) + ": " + error.msg + ").");
-  }
-  try {
-    if (!root.IsMap() || !root["format"] || root["format"].as<std::string>() != kFormat) {
-      Corrupt(path, std::string("is not a built-in material segmenter model (no 'format: ") + kFormat + "').");
+    const YamlReader yaml(path);
+    const YAML::Node& root = yaml.root();
+    if (yaml.String(root, "format", "the model", "") != kFormat) {
+      yaml.Fail(root, std::string("the file is not a built-in material segmenter model (no 'format: ") + kFormat +
+                          "').");
     }
-    const int version = Require(root, "version", path).as<int>();
+    constexpr long long kMaxInt = std::numeric_limits<int>::max();
+    const long long version = yaml.Integer(root, "version", "the model", -kMaxInt, kMaxInt);
     if (version != kVersion) {
-      Corrupt(path, "has version " + std::to_string(version) + "; this build reads version " +
-                        std::to_string(kVersion) + ".");
+      yaml.Fail(root["version"], "the file has version " + std::to_string(version) + "; this build reads version " +
+                                     std::to_string(kVersion) + ".");
     }
-    const auto labels = Require(root, "labels", path).as<std::vector<std::string>>();
+    const std::vector<std::string> labels = yaml.Strings(yaml.Require(root, "labels", "the model"), "labels");
     if (labels.empty() || labels.size() > 255) {
-      Corrupt(path, "has " + std::to_string(labels.size()) + " labels; a model has 1 to 255.");
+      yaml.Fail(root["labels"], "the model has " + std::to_string(labels.size()) + " labels; a model has 1 to 255.");
     }
-    const int window = Require(root, "window", path).as<int>();
-    const int stride = Require(root, "stride", path).as<int>();
-    const double temperature = Require(root, "temperature", path).as<double>();
-    if (!(temperature > 0.0) || !std::isfinite(temperature)) {
-      Corrupt(path, "has temperature " + FormatShort(temperature) + "; it must be positive and finite.");
+    const int window = static_cast<int>(yaml.Integer(root, "window", "the model", -kMaxInt, kMaxInt));
+    const int stride = static_cast<int>(yaml.Integer(root, "stride", "the model", -kMaxInt, kMaxInt));
+    const double temperature = yaml.Number(root, "temperature", "the model");
+    if (!(temperature > 0.0)) {
+      yaml.Fail(root["temperature"],
+                "the file has temperature " + FormatShort(temperature) + "; it must be positive.");
     }
     const Eigen::Index d = MaterialFeatures::kDimension;
     const Eigen::Index n = static_cast<Eigen::Index>(labels.size());
-    const YAML::Node b1_node = Require(root, "b1", path);
-    const Eigen::Index h = b1_node["cols"] ? b1_node["cols"].as<Eigen::Index>() : 0;
+    const YAML::Node b1_node = yaml.Require(root, "b1", "the model");
+    const Eigen::Index h = yaml.Integer(b1_node, "cols", "'b1'", 0, kMaxInt, 0);
     if (h < 1 || h > kMaxHiddenUnits) {
-      Corrupt(path, "has a malformed 'b1': " + std::to_string(h) + " hidden units, outside [1, " +
-                        std::to_string(kMaxHiddenUnits) + "].");
+      yaml.Fail(b1_node, "the model has a malformed 'b1': " + std::to_string(h) + " hidden units, outside [1, " +
+                             std::to_string(kMaxHiddenUnits) + "].");
     }
-    const Eigen::VectorXf mean = ReadMatrix(root, "feature_mean", path, 1, d).transpose();
-    const Eigen::VectorXf inverse_scale = ReadMatrix(root, "feature_inverse_scale", path, 1, d).transpose();
-    Eigen::MatrixXf w1 = ReadMatrix(root, "w1", path, h, d);
-    const Eigen::VectorXf b1 = ReadMatrix(root, "b1", path, 1, h).transpose();
-    Eigen::MatrixXf w2 = ReadMatrix(root, "w2", path, n, h);
-    const Eigen::VectorXf b2 = ReadMatrix(root, "b2", path, 1, n).transpose();
-    return BuiltinMaterialSegmenter(labels, MaterialFeatures(window, stride), mean, inverse_scale, std::move(w1), b1,
-                                    std::move(w2), b2, temperature);
-  } catch (const YAML::Exception& error) {
-    Corrupt(path, "has a value of the wrong type (line " + std::to_string(error.mark.line + 1) + ": " + error.msg +
-                      ").");
+    const Eigen::VectorXf mean = ReadMatrix(yaml, "feature_mean", 1, d).transpose();
+    const Eigen::VectorXf inverse_scale = ReadMatrix(yaml, "feature_inverse_scale", 1, d).transpose();
+    Eigen::MatrixXf w1 = ReadMatrix(yaml, "w1", h, d);
+    const Eigen::VectorXf b1 = ReadMatrix(yaml, "b1", 1, h).transpose();
+    Eigen::MatrixXf w2 = ReadMatrix(yaml, "w2", n, h);
+    const Eigen::VectorXf b2 = ReadMatrix(yaml, "b2", 1, n).transpose();
+    try {
+      return BuiltinMaterialSegmenter(labels, MaterialFeatures(window, stride), mean, inverse_scale, std::move(w1),
+                                      b1, std::move(w2), b2, temperature);
+    } catch (const std::invalid_argument& error) {
+      yaml.Fail(YAML::Node(), std::string("the model is inconsistent: ") + error.what());
+    }
   } catch (const std::invalid_argument& error) {
-    Corrupt(path, std::string("is inconsistent: ") + error.what());
+    throw std::invalid_argument(error.what() + remedy);
   }
 }
 

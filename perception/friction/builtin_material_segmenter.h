@@ -71,8 +71,9 @@ class BuiltinMaterialSegmenter final : public MaterialSegmenter {
                                         const std::vector<cv::Mat>& label_images, const TrainingOptions& options,
                                         TrainingReport* report = nullptr);
 
-  /// Reads a model written by Save(); throws std::runtime_error naming the file and what is wrong with it
-  /// (including a window, stride or hidden-unit count beyond the limits above, or more than 255 labels).
+  /// Reads a model written by Save(); throws std::invalid_argument naming the file, the line and what is wrong
+  /// with it (including a window, stride or hidden-unit count beyond the limits above, or more than 255 labels)
+  /// and how to re-create it.
   static BuiltinMaterialSegmenter Load(const std::string& path);
   /// Writes the model as YAML, atomically. Throws std::runtime_error naming the path on failure.
   void Save(const std::string& path) const;

@@ -37,6 +37,7 @@ class FrictionEstimator final : public systems::LeafSystem {
     QuantileMethod method{QuantileMethod::kExact};
     /// Step of QuantileMethod::kSearch.
     double search_step{0.02};
+    /// Threads (0 = one per core; rule: cairn::ResolveThreadCount).
     int num_threads{0};
     /// Declares the depth and pose inputs and the point output, using these intrinsics.
     bool with_geometry{false};

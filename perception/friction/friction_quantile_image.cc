@@ -9,8 +9,8 @@
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/cairn_assert.h"
+#include "cairn/common/parallel_for.h"
 #include "cairn/perception/internal/multiversion.h"
-#include "cairn/perception/internal/parallel_rows.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define CAIRN_FRICTION_QUANTILE_AVX2 1
@@ -590,8 +590,8 @@ void FrictionQuantileImage::Compute(const cv::Mat& probabilities, cv::Mat* quant
   const PixelDotsKernel pixel_dots = PixelDots(avx2_, num_labels_, num_dot_vectors_);
   // A thread stops at its first bad row; its exception (a bad pixel, or an allocation failure) is rethrown here,
   // the first band's first, so the first bad pixel of the image is the one named.
-  std::vector<std::exception_ptr> failures(internal::ResolveThreadCount(options_.num_threads));
-  internal::ParallelForRows(input.rows, static_cast<int>(failures.size()), [&](int thread, int row_begin, int row_end) {
+  std::vector<std::exception_ptr> failures(ResolveThreadCount(options_.num_threads));
+  ParallelFor(input.rows, static_cast<int>(failures.size()), [&](int thread, int row_begin, int row_end) {
     try {
       Workspace workspace(cols, stride_, !avx2_);
       float* const dots[4] = {workspace.dots[0].data(), workspace.dots[1].data(), workspace.dots[2].data(),

@@ -34,7 +34,7 @@ class FrictionQuantileImage {
     QuantileMethod method{QuantileMethod::kExact};
     /// Step of kSearch (the thesis used 0.02); unused by the other methods.
     double tolerance{0.02};
-    /// 0 = one per core.
+    /// Threads (0 = one per core; rule: cairn::ResolveThreadCount).
     int num_threads{0};
   };
 

@@ -1,8 +1,7 @@
 #include "cairn/perception/friction/material_registry.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -10,14 +9,17 @@
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/atomic_file.h"
+#include "cairn/common/internal/yaml_reader.h"
 #include "cairn/common/text_suggestions.h"
 
 namespace cairn::perception {
 namespace {
 
+using cairn::internal::YamlReader;
+
 // Bounds on what a registry file may state.
 constexpr int kMaxMaterials = 1000;
-constexpr double kMaxContacts = 1e9;
+constexpr long long kMaxContacts = 1000000000;
 
 // The posterior of μ ~ N(m, s²) after one observation, and the observation's likelihood under N(m, s²).
 struct Posterior {
@@ -206,73 +208,51 @@ void MaterialRegistry::SaveYaml(const std::string& path) const {
 }
 
 MaterialRegistry MaterialRegistry::LoadYaml(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw std::invalid_argument("Cannot read the material registry '" + path + "'; check the path.");
-  } catch (const YAML::Exception& error) {
-    throw std::invalid_argument("Malformed YAML in '" + path + "' at line " + std::to_string(error.mark.line + 1) +
-                                ": " + error.msg);
-  }
-  auto fail = [&path](const YAML::Node& node, const std::string& message) -> std::invalid_argument {
-    return std::invalid_argument("In '" + path + "' line " + std::to_string(node.Mark().line + 1) + ": " + message);
-  };
-  const YAML::Node list = root["materials"];
-  if (!list || !list.IsSequence()) {
-    throw std::invalid_argument("'" + path + "' needs a top-level key 'materials' holding a list of materials.");
-  }
-  auto number = [&](const YAML::Node& entry, const char* key) {
-    const YAML::Node value = entry[key];
-    if (!value) throw fail(entry, std::string("missing key '") + key + "'.");
-    try {
-      return value.as<double>();
-    } catch (const YAML::Exception&) {
-      throw fail(value, std::string("key '") + key + "' must be a number; got '" + value.as<std::string>() + "'.");
-    }
-  };
+  const YamlReader yaml(path);
+  const YAML::Node& root = yaml.root();
+  yaml.CheckKeys(root, {"materials"}, "the material registry");
+  const YAML::Node list = yaml.Require(root, "materials", "the material registry");
+  if (!list.IsSequence()) yaml.Fail(list, "'materials' must be a list of materials.");
   if (list.size() > static_cast<std::size_t>(kMaxMaterials)) {
-    throw fail(list, "'materials' lists " + std::to_string(list.size()) + " materials; a registry holds at most " +
-                         std::to_string(kMaxMaterials) + ".");
+    yaml.Fail(list, "'materials' lists " + std::to_string(list.size()) + " materials; a registry holds at most " +
+                        std::to_string(kMaxMaterials) + ".");
   }
   std::vector<Material> materials;
   for (const YAML::Node& entry : list) {
-    if (!entry.IsMap() || !entry["label"]) throw fail(entry, "each material needs a 'label'.");
-    const std::string label = entry["label"].as<std::string>();
-    const std::string kind = entry["distribution"] ? entry["distribution"].as<std::string>() : "normal";
+    if (!YamlReader::Has(entry, "label")) yaml.Fail(entry, "each material needs a 'label'.");
+    const std::string label = yaml.String(entry, "label", "a material");
+    const std::string where = "material '" + label + "'";
+    yaml.CheckKeys(entry, {"label", "distribution", "mean", "stddev", "location", "scale", "shape", "contacts"}, where);
+    const std::string kind = yaml.String(entry, "distribution", where, "normal");
     try {
       Material material{label, FrictionDistribution::NotWalkable(), 0};
       if (kind == "normal") {
-        material.friction = FrictionDistribution::Normal(number(entry, "mean"), number(entry, "stddev"));
+        material.friction =
+            FrictionDistribution::Normal(yaml.Number(entry, "mean", where), yaml.Number(entry, "stddev", where));
       } else if (kind == "truncated_normal") {
-        material.friction = FrictionDistribution::TruncatedNormal(number(entry, "mean"), number(entry, "stddev"));
+        material.friction = FrictionDistribution::TruncatedNormal(yaml.Number(entry, "mean", where),
+                                                                  yaml.Number(entry, "stddev", where));
       } else if (kind == "gev") {
-        material.friction = FrictionDistribution::GeneralizedExtremeValue(
-            number(entry, "location"), number(entry, "scale"), number(entry, "shape"));
+        material.friction = FrictionDistribution::GeneralizedExtremeValue(yaml.Number(entry, "location", where),
+                                                                          yaml.Number(entry, "scale", where),
+                                                                          yaml.Number(entry, "shape", where));
       } else if (kind != "not_walkable") {
-        throw fail(entry["distribution"], "unknown distribution '" + kind + "' for material '" + label +
-                                              "'; use normal, truncated_normal, gev or not_walkable.");
+        yaml.Fail(entry["distribution"], "unknown distribution '" + kind + "' for " + where +
+                                             "; use normal, truncated_normal, gev or not_walkable.");
       }
       CheckPhysicalFriction(material.friction);
-      if (entry["contacts"]) {
-        const double contacts = number(entry, "contacts");
-        if (!(contacts >= 0.0 && contacts <= kMaxContacts) || contacts != std::floor(contacts)) {
-          throw fail(entry["contacts"], "material '" + label + "': 'contacts' must be an integer in [0, " +
-                                            FormatShort(kMaxContacts) + "]; got " + FormatShort(contacts) + ".");
-        }
-        material.num_contacts = static_cast<int>(contacts);
-      }
+      material.num_contacts = static_cast<int>(yaml.Integer(entry, "contacts", where, 0, kMaxContacts, 0));
       materials.push_back(std::move(material));
     } catch (const std::invalid_argument& error) {
       const std::string message = error.what();
       if (message.rfind("In '", 0) == 0) throw;
-      throw fail(entry, "material '" + label + "': " + message);
+      throw yaml.Error(entry, where + ": " + message);
     }
   }
   try {
     return MaterialRegistry(std::move(materials));
   } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument("In '" + path + "': " + error.what());
+    throw yaml.Error(list, error.what());
   }
 }
 

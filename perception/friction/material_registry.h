@@ -36,9 +36,9 @@ class MaterialRegistry {
   /// paper not walkable. 14 labels in that order.
   static MaterialRegistry ThesisTable33();
 
-  /// Reads a registry from YAML (schema in docs of SaveYaml). Errors name the file, the key and the line. Every
-  /// distribution must be physical friction (CheckPhysicalFriction(): means in (0, 10], ...); a file lists at most
-  /// 1000 materials, each with at most 1e9 contacts.
+  /// Reads a registry from YAML (schema in docs of SaveYaml). Throws std::invalid_argument naming the file, the
+  /// line and the key. Every distribution must be physical friction (CheckPhysicalFriction(): means in (0, 10],
+  /// ...); a file lists at most 1000 materials, each with at most 1e9 contacts.
   static MaterialRegistry LoadYaml(const std::string& path);
   /// Writes the registry (with learned parameters and contact counts) atomically:
   /// @code{.yaml}

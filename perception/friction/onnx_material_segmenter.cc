@@ -4,14 +4,15 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <utility>
 
 #include <opencv2/dnn.hpp>
 #include <opencv2/imgproc.hpp>
-#include <yaml-cpp/yaml.h>
 
+#include "cairn/common/internal/yaml_reader.h"
 #include "cairn/common/number_text.h"
 #include "cairn/perception/io/image_file.h"
 
@@ -24,14 +25,7 @@ struct OnnxMaterialSegmenter::Network {
 
 namespace {
 
-[[noreturn]] void BadKey(const std::string& path, const std::string& key, const std::string& expected) {
-  throw std::invalid_argument("OnnxMaterialSegmenter: '" + path + "': key '" + key + "' " + expected);
-}
-
-std::string FolderOf(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
-}
+using cairn::internal::YamlReader;
 
 // Runs the network on `bgr` (8-bit, 3 channels) and returns the raw 1 x C x H x W output.
 cv::Mat Forward(cv::dnn::Net* net, std::mutex* mutex, const OnnxMaterialSegmenter::Preprocessing& pre,
@@ -54,64 +48,37 @@ OnnxMaterialSegmenter::OnnxMaterialSegmenter(std::vector<std::string> labels, Pr
       network_(std::move(network)) {}
 
 OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(yaml_path);
-  } catch (const YAML::BadFile&) {
-    throw std::runtime_error("OnnxMaterialSegmenter: cannot open '" + yaml_path +
-                             "'; pass the YAML that describes the model (e.g. data/models/tiny_material_net.yaml).");
-  } catch (const YAML::Exception& error) {
-    throw std::runtime_error("OnnxMaterialSegmenter: '" + yaml_path + "' is not valid YAML (line " +
-                             std::to_string(error.mark.line + 1) + ": " + error.msg + ").");
-  }
-  if (!root.IsMap()) BadKey(yaml_path, "<root>", "must be a map with keys model, labels and input.");
-  std::vector<std::string> labels;
-  std::string model;
+  const YamlReader yaml(yaml_path);
+  const YAML::Node& root = yaml.root();
+  const std::string where = "the model description";
+  yaml.CheckKeys(root, {"model", "labels", "input", "training"}, where);
+  if (!YamlReader::Has(root, "model")) yaml.Fail(root, "missing key 'model': name the .onnx file.");
+  const std::string model = yaml.String(root, "model", where);
+  const std::vector<std::string> labels = yaml.Strings(yaml.Require(root, "labels", where), "labels");
+  if (labels.empty()) yaml.Fail(root["labels"], "key 'labels' must be a non-empty list, one label per output channel.");
+  const YAML::Node input = yaml.Require(root, "input", where);
+  yaml.CheckKeys(input, {"width", "height", "channel_order", "mean", "scale"}, "'input'");
   Preprocessing pre;
-  try {
-    if (!root["model"] || !root["model"].IsScalar()) BadKey(yaml_path, "model", "must name the .onnx file.");
-    model = root["model"].as<std::string>();
-    if (!root["labels"] || !root["labels"].IsSequence() || root["labels"].size() == 0) {
-      BadKey(yaml_path, "labels", "must be a non-empty list, one label per output channel.");
-    }
-    labels = root["labels"].as<std::vector<std::string>>();
-    const YAML::Node input = root["input"];
-    if (!input || !input.IsMap()) {
-      BadKey(yaml_path, "input", "must be a map with width, height, channel_order, mean and scale.");
-    }
-    pre.width = input["width"] ? input["width"].as<int>() : 0;
-    pre.height = input["height"] ? input["height"].as<int>() : 0;
-    if (pre.width <= 0 || pre.height <= 0 ||
-        static_cast<std::int64_t>(pre.width) * pre.height > kMaxImagePixels) {
-      BadKey(yaml_path, "input.width/height", "must be positive integers with at most " +
-                                                  std::to_string(kMaxImagePixels) + " pixels in all; got " +
-                                                  std::to_string(pre.width) + "x" + std::to_string(pre.height) + ".");
-    }
-    const std::string order = input["channel_order"] ? input["channel_order"].as<std::string>() : "";
-    if (order != "rgb" && order != "bgr") {
-      BadKey(yaml_path, "input.channel_order", "must be 'rgb' or 'bgr'; got '" + order + "'.");
-    }
-    pre.rgb = order == "rgb";
-    if (input["mean"]) {
-      const auto mean = input["mean"].as<std::vector<double>>();
-      if (mean.size() != 3) {
-        BadKey(yaml_path, "input.mean", "must have 3 values (one per channel); got " + std::to_string(mean.size()) +
-                                            ".");
-      }
-      for (double m : mean) {
-        if (!std::isfinite(m)) BadKey(yaml_path, "input.mean", "must hold finite numbers; got " + FormatShort(m) + ".");
-      }
-      pre.mean = Eigen::Vector3d(mean[0], mean[1], mean[2]);
-    }
-    pre.scale = input["scale"] ? input["scale"].as<double>() : 1.0;
-    if (!(pre.scale > 0.0) || !std::isfinite(pre.scale)) {
-      BadKey(yaml_path, "input.scale", "must be positive and finite; got " + FormatShort(pre.scale) + ".");
-    }
-  } catch (const YAML::Exception& error) {
-    throw std::invalid_argument("OnnxMaterialSegmenter: '" + yaml_path + "' has a value of the wrong type (line " +
-                                std::to_string(error.mark.line + 1) + ": " + error.msg + ").");
+  constexpr long long kMaxInt = std::numeric_limits<int>::max();
+  pre.width = static_cast<int>(yaml.AsInteger(yaml.Require(input, "width", "'input'"), "input.width", 1, kMaxInt));
+  pre.height = static_cast<int>(yaml.AsInteger(yaml.Require(input, "height", "'input'"), "input.height", 1, kMaxInt));
+  if (static_cast<std::int64_t>(pre.width) * pre.height > kMaxImagePixels) {
+    yaml.Fail(input, "keys 'input.width' and 'input.height' give " + std::to_string(pre.width) + "x" +
+                         std::to_string(pre.height) + " pixels, more than the " + std::to_string(kMaxImagePixels) +
+                         " an input may have.");
   }
-  const std::string model_path = model.empty() || model[0] == '/' ? model : FolderOf(yaml_path) + "/" + model;
+  const std::string order = yaml.String(input, "channel_order", "'input'", "");
+  if (order != "rgb" && order != "bgr") {
+    yaml.Fail(YamlReader::Has(input, "channel_order") ? input["channel_order"] : input,
+              "key 'input.channel_order' must be 'rgb' or 'bgr'; got '" + order + "'.");
+  }
+  pre.rgb = order == "rgb";
+  if (YamlReader::Has(input, "mean")) pre.mean = yaml.Numbers(input["mean"], "input.mean", 3);
+  pre.scale = YamlReader::Has(input, "scale") ? yaml.AsNumber(input["scale"], "input.scale") : 1.0;
+  if (!(pre.scale > 0.0)) {
+    yaml.Fail(input["scale"], "key 'input.scale' must be positive; got " + FormatShort(pre.scale) + ".");
+  }
+  const std::string model_path = yaml.Resolve(model);
   if (!std::ifstream(model_path).good()) {
     throw std::runtime_error("OnnxMaterialSegmenter: the model file '" + model_path + "' named by '" + yaml_path +
                              "' cannot be opened; check the 'model' key (relative paths start at the YAML's "

@@ -42,9 +42,9 @@ class OnnxMaterialSegmenter final : public MaterialSegmenter {
   };
 
   /// Reads the YAML description and the model, and runs the network once to check that its output has one
-  /// channel per label. Throws std::runtime_error for a missing or unreadable file (naming it), and
-  /// std::invalid_argument for a bad key (naming it and the expected form) or a label map that disagrees with
-  /// the model's output channels.
+  /// channel per label. Throws std::invalid_argument for an unreadable or malformed YAML file, a bad key (naming
+  /// the file, the line, the key and the expected form) or a label map that disagrees with the model's output
+  /// channels, and std::runtime_error for a model file that cannot be opened or run.
   static OnnxMaterialSegmenter Load(const std::string& yaml_path);
 
   const Preprocessing& preprocessing() const { return preprocessing_; }

@@ -32,7 +32,7 @@ class CostCurveSensorModel {
     /// Cells whose visibility P(V_i | E) (the confidence mass at or beyond them) is below this are left alone:
     /// the model gives them the prior 0.5 plus a sliver, and that sliver would pile up behind surfaces.
     double min_visibility{0.25};
-    /// Threads splitting the image rows; 0 = one per core.
+    /// Threads splitting the image rows (0 = one per core; rule: cairn::ResolveThreadCount).
     int num_threads{0};
   };
 

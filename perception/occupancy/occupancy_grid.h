@@ -13,7 +13,7 @@
 
 #include <Eigen/Core>
 
-#include "cairn/perception/internal/grid_walk.h"
+#include "cairn/perception/occupancy/grid_walk.h"
 
 namespace cairn::perception {
 

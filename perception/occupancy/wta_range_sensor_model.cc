@@ -6,7 +6,7 @@
 #include <string>
 
 #include "cairn/common/cairn_assert.h"
-#include "cairn/perception/internal/ray_integration.h"
+#include "cairn/perception/occupancy/internal/ray_integration.h"
 
 namespace cairn::perception {
 

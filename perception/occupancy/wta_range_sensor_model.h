@@ -31,7 +31,7 @@ class WtaRangeSensorModel {
     double max_probability{0.97};
     /// Cells less visible than this are not updated, as CostCurveSensorModel::Options::min_visibility.
     double min_visibility{0.25};
-    /// Threads; 0 = one per core.
+    /// Threads (0 = one per core; rule: cairn::ResolveThreadCount).
     int num_threads{0};
   };
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "cairn/common/cairn_assert.h"
-#include "cairn/perception/internal/fast_exp.h"
-#include "cairn/perception/internal/parallel_rows.h"
+#include "cairn/common/parallel_for.h"
+#include "cairn/perception/stereo/internal/fast_exp.h"
 
 namespace cairn::perception {
 
@@ -33,7 +33,7 @@ void ComputeConfidence(const DisparityVolume& costs, const ConfidenceModel& mode
   const HistogramSensorModel* histogram = model.histogram();
   constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-  internal::ParallelForRows(costs.height(), internal::ResolveThreadCount(num_threads), [&](int, int y0, int y1) {
+  ParallelFor(costs.height(), num_threads, [&](int, int y0, int y1) {
     std::vector<float> log_p(num_disp);
     for (int y = y0; y < y1; ++y) {
       for (int x = 0; x < width; ++x) {

@@ -11,9 +11,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cairn/common/cairn_assert.h"
+#include "cairn/common/parallel_for.h"
 #include "cairn/perception/internal/multiversion.h"
-#include "cairn/perception/internal/parallel_rows.h"
-#include "cairn/perception/internal/winner_take_all_row.h"
+#include "cairn/perception/stereo/internal/winner_take_all_row.h"
 
 namespace cairn::perception {
 namespace {
@@ -215,12 +215,12 @@ void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const
   const float scale = bt ? 0.5f : 1.0f;
   costs->Resize(height, width, dmin, dmax);
   const std::size_t row_size = static_cast<std::size_t>(width) * num_disp;
-  const int threads = internal::ResolveThreadCount(options.num_threads);
+  const int threads = ResolveThreadCount(options.num_threads);
 
   if (wta != nullptr) internal::AllocateWtaResult(height, width, wta);
   const bool fused_avx2 = wta != nullptr && internal::CpuHasAvx2();
 
-  internal::ParallelForRows(height, threads, [&](int, int y0, int y1) {
+  ParallelFor(height, threads, [&](int, int y0, int y1) {
     // Per-band workspace: a ring of `window` pixel-cost rows and their column sums.
     RowSignals signals;
     const std::size_t span = static_cast<std::size_t>(width + num_disp - 1);

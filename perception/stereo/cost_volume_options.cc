@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "cairn/common/parallel_for.h"
 #include "cairn/common/text_suggestions.h"
 #include "cairn/perception/io/image_file.h"
 
@@ -84,10 +85,7 @@ void CostVolumeOptions::Validate(int image_width, int image_height) const {
                                   " is outside 1..63; OpenCV's default is 31");
     }
   }
-  if (num_threads < 0) {
-    throw std::invalid_argument("num_threads " + std::to_string(num_threads) +
-                                " is negative; use 0 for one thread per core");
-  }
+  ResolveThreadCount(num_threads);  // the one thread-count rule: throws for a negative or too large count
 }
 
 }  // namespace cairn::perception

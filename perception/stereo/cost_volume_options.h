@@ -49,7 +49,7 @@ struct CostVolumeOptions {
   int prefilter_size{9};
   /// The prefiltered response is clipped to [-prefilter_cap, prefilter_cap]; 1..63 as in OpenCV.
   int prefilter_cap{31};
-  /// Worker threads splitting the image rows; 0 uses std::thread::hardware_concurrency().
+  /// Worker threads splitting the image rows (0 = one per core; rule: cairn::ResolveThreadCount).
   int num_threads{0};
 
   /// Checks the options against the image size; throws std::invalid_argument naming the bad value and the fix

@@ -34,9 +34,9 @@ namespace cairn::perception {
 /// No state; outputs depend on time only.
 class StereoSource final : public systems::LeafSystem {
  public:
-  /// Reads `yaml_path`. Throws std::runtime_error naming the file and the problem (unreadable file, missing key,
-  /// non-finite number, unreadable or too large image, too many frames or pixels, left/right size mismatch, bad
-  /// calibration), std::invalid_argument for a bad period.
+  /// Reads `yaml_path`. Throws std::invalid_argument naming the file, the line and the problem (unreadable or
+  /// malformed file, missing, unknown or repeated key, non-finite number, unreadable or too large image, more than
+  /// 100000 frames or 2^30 pixels in all, left/right size mismatch, bad calibration) or a bad period.
   StereoSource(const std::string& yaml_path, double period);
 
   const StereoCalibration& calibration() const { return calibration_; }

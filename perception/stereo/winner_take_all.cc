@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "cairn/common/cairn_assert.h"
+#include "cairn/common/parallel_for.h"
 #include "cairn/perception/internal/multiversion.h"
-#include "cairn/perception/internal/parallel_rows.h"
-#include "cairn/perception/internal/winner_take_all_row.h"
+#include "cairn/perception/stereo/internal/winner_take_all_row.h"
 
 namespace cairn::perception {
 
@@ -167,7 +167,7 @@ void ComputeWinnerTakeAll(const DisparityVolume& costs, const WtaOptions& option
   const int num_disp = costs.num_disparities();
   const int dmin = costs.min_disparity();
   const bool avx2 = internal::CpuHasAvx2();
-  internal::ParallelForRows(height, internal::ResolveThreadCount(options.num_threads), [&](int, int y0, int y1) {
+  ParallelFor(height, options.num_threads, [&](int, int y0, int y1) {
     if (avx2) {
       internal::WtaRowScratch scratch;
       scratch.Resize(width, num_disp, dmin);

@@ -15,7 +15,7 @@ struct WtaOptions {
   bool subpixel{true};
   /// The left and right winners agree when their integer disparities differ by at most this many pixels.
   int lr_tolerance{1};
-  /// Threads splitting the image rows; 0 = one per core.
+  /// Threads splitting the image rows (0 = one per core; rule: cairn::ResolveThreadCount).
   int num_threads{0};
 };
 

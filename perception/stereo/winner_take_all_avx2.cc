@@ -1,4 +1,4 @@
-// AVX2 kernels of the winner-take-all (declared in perception/internal/winner_take_all_row.h).
+// AVX2 kernels of the winner-take-all (declared in perception/stereo/internal/winner_take_all_row.h).
 //
 // The portable row kernel in winner_take_all.cc makes five passes over a row of curves that no longer fits in L1;
 // here each pixel's curve is handled once, from a small padded buffer in L1, eight disparities per instruction:
@@ -16,7 +16,7 @@
 #include <limits>
 
 #include "cairn/common/cairn_assert.h"
-#include "cairn/perception/internal/winner_take_all_row.h"
+#include "cairn/perception/stereo/internal/winner_take_all_row.h"
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>

@@ -4,7 +4,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -15,11 +14,13 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
-#include <thread>
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/atomic_file.h"
+#include "cairn/common/hash.h"
+#include "cairn/common/parallel_for.h"
 
 namespace cairn::planning {
 namespace {
@@ -29,21 +30,6 @@ constexpr const char* kMagic = "cairn-transition-oracle 1";
 constexpr int kDoublesPerEntry = 9;
 // Lookups match a single-valued axis, and the grid's ends, within this distance.
 constexpr double kAxisTolerance = 1e-9;
-
-std::string Hex(std::uint64_t x) {
-  char text[24];
-  std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(x));
-  return text;
-}
-
-std::uint64_t Fnv1a(const char* data, std::size_t size) {
-  std::uint64_t hash = 1469598103934665603ULL;
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= static_cast<unsigned char>(data[i]);
-    hash *= 1099511628211ULL;
-  }
-  return hash;
-}
 
 void PutDouble(std::string& out, double value) {
   std::uint64_t bits;
@@ -151,10 +137,7 @@ bool operator==(const OracleGrid& a, const OracleGrid& b) {
 TransitionOracle TransitionOracle::Build(const WalkingModel& model, WalkingObjective objective,
                                          const OracleGrid& grid, const OracleBuildOptions& options) {
   grid.Validate(model.reach());
-  if (options.num_threads < 0) {
-    throw std::invalid_argument("TransitionOracle::Build: num_threads is " + std::to_string(options.num_threads) +
-                                "; use 0 for all cores or a positive count.");
-  }
+  const int threads = ResolveThreadCount(options.num_threads);
   const auto start = std::chrono::steady_clock::now();
   TransitionOracle oracle;
   oracle.grid_ = grid;
@@ -166,68 +149,65 @@ TransitionOracle TransitionOracle::Build(const WalkingModel& model, WalkingObjec
   const std::size_t cells = grid.num_displacements();
   const std::size_t num_mu = grid.mu.size();
   const std::size_t total = grid.num_entries();
-  std::atomic<std::size_t> next_cell{0};
+  if (cells > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw std::invalid_argument("TransitionOracle::Build: the grid has " + std::to_string(cells) +
+                                " step displacements, more than the " +
+                                std::to_string(std::numeric_limits<int>::max()) + " supported; use fewer axis values.");
+  }
   std::mutex progress_mutex;
   std::size_t done = 0;
-  std::exception_ptr failure;
-  std::atomic<bool> failed{false};
+  std::atomic<int> first_failure{std::numeric_limits<int>::max()};
 
-  auto work = [&]() {
-    while (!failed.load()) {
-      const std::size_t cell = next_cell.fetch_add(1);
-      if (cell >= cells) return;
-      try {
-        std::size_t rest = cell;
-        const std::size_t i_th = rest % grid.dtheta.size();
-        rest /= grid.dtheta.size();
-        const std::size_t i_dz = rest % grid.dz.size();
-        rest /= grid.dz.size();
-        const std::size_t i_dy = rest % grid.dy.size();
-        const std::size_t i_dx = rest / grid.dy.size();
-        const StepDisplacement d{grid.dx[i_dx], grid.dy[i_dy], grid.dz[i_dz], grid.dtheta[i_th]};
-        Entry* entries = &oracle.entries_[cell * num_mu];
-        // From the largest mu down. An optimum that already meets a smaller mu is optimal there too; otherwise
-        // SLSQP follows the optimum from the previous mu, with the global search as the fallback. A step that
-        // is infeasible at some mu is infeasible at every smaller one (the constraint only tightens).
-        for (std::size_t k = num_mu; k-- > 0;) {
-          const double mu = grid.mu[k];
-          if (k + 1 == num_mu) {
+  // One band per displacement, started in order by whichever thread is free (the cells' optimisations take very
+  // different times). After a failure, cells above the failing one are skipped; cells below it still run, so the
+  // exception rethrown is always that of the lowest failing cell.
+  ParallelForBands(static_cast<int>(cells), static_cast<int>(cells), threads, [&](int band, int, int) {
+    if (band > first_failure.load()) return;
+    const std::size_t cell = static_cast<std::size_t>(band);
+    try {
+      std::size_t rest = cell;
+      const std::size_t i_th = rest % grid.dtheta.size();
+      rest /= grid.dtheta.size();
+      const std::size_t i_dz = rest % grid.dz.size();
+      rest /= grid.dz.size();
+      const std::size_t i_dy = rest % grid.dy.size();
+      const std::size_t i_dx = rest / grid.dy.size();
+      const StepDisplacement d{grid.dx[i_dx], grid.dy[i_dy], grid.dz[i_dz], grid.dtheta[i_th]};
+      Entry* entries = &oracle.entries_[cell * num_mu];
+      // From the largest mu down. An optimum that already meets a smaller mu is optimal there too; otherwise
+      // SLSQP follows the optimum from the previous mu, with the global search as the fallback. A step that
+      // is infeasible at some mu is infeasible at every smaller one (the constraint only tightens).
+      for (std::size_t k = num_mu; k-- > 0;) {
+        const double mu = grid.mu[k];
+        if (k + 1 == num_mu) {
+          entries[k] = OptimizeTransition(model, d, mu, objective, nullptr, options.optimizer);
+        } else if (!entries[k + 1].feasible) {
+          entries[k] = Entry{};
+        } else if (entries[k + 1].rcof <= mu) {
+          entries[k] = entries[k + 1];
+        } else {
+          entries[k] = OptimizeTransition(model, d, mu, objective, &entries[k + 1].parameters, options.optimizer);
+          if (!entries[k].feasible) {
             entries[k] = OptimizeTransition(model, d, mu, objective, nullptr, options.optimizer);
-          } else if (!entries[k + 1].feasible) {
-            entries[k] = Entry{};
-          } else if (entries[k + 1].rcof <= mu) {
-            entries[k] = entries[k + 1];
-          } else {
-            entries[k] = OptimizeTransition(model, d, mu, objective, &entries[k + 1].parameters, options.optimizer);
-            if (!entries[k].feasible) {
-              entries[k] = OptimizeTransition(model, d, mu, objective, nullptr, options.optimizer);
-            }
           }
         }
-        // A step feasible at a smaller mu is feasible at every larger one: keep the cost non-increasing in mu.
-        for (std::size_t k = 1; k < num_mu; ++k) {
-          if (entries[k - 1].feasible && (!entries[k].feasible || entries[k - 1].cost < entries[k].cost)) {
-            entries[k] = entries[k - 1];
-          }
-        }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(progress_mutex);
-        if (!failure) failure = std::current_exception();
-        failed.store(true);
-        return;
       }
-      std::lock_guard<std::mutex> lock(progress_mutex);
-      done += num_mu;
-      if (options.progress) options.progress(done, total);
+      // A step feasible at a smaller mu is feasible at every larger one: keep the cost non-increasing in mu.
+      for (std::size_t k = 1; k < num_mu; ++k) {
+        if (entries[k - 1].feasible && (!entries[k].feasible || entries[k - 1].cost < entries[k].cost)) {
+          entries[k] = entries[k - 1];
+        }
+      }
+    } catch (...) {
+      int seen = first_failure.load();
+      while (band < seen && !first_failure.compare_exchange_weak(seen, band)) {
+      }
+      throw;
     }
-  };
-  int threads = options.num_threads > 0 ? options.num_threads : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::max(1, std::min<int>(threads, static_cast<int>(cells)));
-  std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t) workers.emplace_back(work);
-  work();
-  for (std::thread& worker : workers) worker.join();
-  if (failure) std::rethrow_exception(failure);
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    done += num_mu;
+    if (options.progress) options.progress(done, total);
+  });
   oracle.Finalize();
   oracle.build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return oracle;
@@ -441,13 +421,13 @@ std::string TransitionOracle::Serialize() const {
   }
   std::string header = std::string(kMagic) + "\n";
   header += "robot " + robot_name_ + "\n";
-  header += "model_hash " + Hex(model_hash_) + "\n";
+  header += "model_hash " + HashHex(model_hash_) + "\n";
   header += std::string("objective ") + to_string(objective_) + "\n";
   header += AxisLine("dx", grid_.dx) + AxisLine("dy", grid_.dy) + AxisLine("dz", grid_.dz) +
             AxisLine("dtheta", grid_.dtheta) + AxisLine("mu", grid_.mu);
   header += "entries " + std::to_string(entries_.size()) + "\n";
   header += "payload_bytes " + std::to_string(payload.size()) + "\n";
-  header += "checksum " + Hex(Fnv1a(payload.data(), payload.size())) + "\n";
+  header += "checksum " + HashHex(Fnv1a64(payload)) + "\n";
   header += "end\n";
   return header + payload;
 }
@@ -480,9 +460,9 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
   const std::string robot = field("robot");
   if (robot != model.name()) fail("made for robot '" + robot + "', not '" + model.name() + "'.");
   const std::string hash = field("model_hash");
-  if (hash != Hex(model.content_hash())) {
+  if (hash != HashHex(model.content_hash())) {
     fail("made for another version of the walking model (model hash " + hash + ", current " +
-         Hex(model.content_hash()) + ").");
+         HashHex(model.content_hash()) + ").");
   }
   const std::string stored_objective = field("objective");
   if (stored_objective != to_string(objective)) {
@@ -514,7 +494,9 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
     fail("corrupt: the payload has " + std::to_string(bytes.size() - position) + " bytes, the header says " +
          std::to_string(payload_bytes) + ".");
   }
-  if (Hex(Fnv1a(bytes.data() + position, payload_bytes)) != checksum) fail("corrupt: payload checksum mismatch.");
+  if (HashHex(Fnv1a64(std::string_view(bytes).substr(position, payload_bytes))) != checksum) {
+    fail("corrupt: payload checksum mismatch.");
+  }
 
   TransitionOracle oracle;
   oracle.grid_ = grid;

@@ -41,7 +41,7 @@ inline bool operator!=(const OracleGrid& a, const OracleGrid& b) { return !(a ==
 
 /// How an oracle table is built.
 struct OracleBuildOptions {
-  /// Worker threads; 0 means std::thread::hardware_concurrency(). The table does not depend on it.
+  /// Worker threads (0 = one per core; rule: cairn::ResolveThreadCount). The table does not depend on it.
   int num_threads{0};
   /// Called from the building thread's workers, serialised, as (entries done, entries total); for a progress bar.
   std::function<void(std::size_t done, std::size_t total)> progress;

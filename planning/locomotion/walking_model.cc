@@ -1,7 +1,5 @@
 #include "cairn/planning/locomotion/walking_model.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -13,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "cairn/common/hash.h"
+#include "cairn/common/internal/yaml_reader.h"
 #include "cairn/common/number_text.h"
 #include "cairn/common/text_suggestions.h"
 #include "cairn/multibody/center_of_mass.h"
@@ -46,6 +46,8 @@ struct WalkingModel::Impl {
 
 namespace {
 
+using cairn::internal::YamlReader;
+
 constexpr double kPi = 3.14159265358979323846;
 
 std::string Num(double x) { return FormatShort(x); }
@@ -58,59 +60,31 @@ std::string ReadFile(const std::string& path, const std::string& what) {
   return text.str();
 }
 
-std::uint64_t Fnv1a(const std::string& bytes, std::uint64_t hash = 1469598103934665603ULL) {
-  for (unsigned char c : bytes) {
-    hash ^= c;
-    hash *= 1099511628211ULL;
-  }
-  return hash;
-}
-
-// Reads keys of the walking YAML with messages that name the file, the key path and the line.
+// Reads keys of the walking YAML on top of the common reader; messages name the key by its path ("reach.dx")
+// after the file and line.
 class Reader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
+  explicit Reader(const YamlReader& yaml) : yaml_(yaml) {}
 
   [[noreturn]] void Fail(const std::string& key, const YAML::Node& node, const std::string& message) const {
-    std::string where = file_ + ": key '" + key + "'";
-    if (node.IsDefined() && node.Mark().line >= 0) where += " (line " + std::to_string(node.Mark().line + 1) + ")";
-    throw std::runtime_error(where + ": " + message);
+    yaml_.Fail(node, "key '" + key + "': " + message);
   }
 
+  // `prefix` is the mapping's key path with a trailing dot ("reach."), "" for the top level.
   void CheckKeys(const YAML::Node& map, const std::string& prefix, const std::vector<std::string>& known) const {
-    for (const auto& item : map) {
-      const std::string key = item.first.as<std::string>();
-      if (std::find(known.begin(), known.end(), key) == known.end()) {
-        Fail(prefix + key, item.first,
-             "unknown key; did you mean " + QuotedList(ClosestNames(key, known)) + "? Known keys: " +
-                 QuotedList(known) + ".");
-      }
-    }
+    yaml_.CheckKeys(map, known, prefix.empty() ? "the walking model" : "'" + prefix.substr(0, prefix.size() - 1) + "'");
   }
 
   YAML::Node Child(const YAML::Node& map, const std::string& prefix, const std::string& key) const {
-    const YAML::Node node = map[key];
-    if (!node.IsDefined() || node.IsNull()) Fail(prefix + key, map, "missing; see data/robots/README.md.");
-    return node;
+    if (!YamlReader::Has(map, key)) Fail(prefix + key, map, "missing; see data/robots/README.md.");
+    return map[key];
   }
 
   std::string String(const YAML::Node& map, const std::string& prefix, const std::string& key) const {
-    const YAML::Node node = Child(map, prefix, key);
-    if (!node.IsScalar()) Fail(prefix + key, node, "expected a string.");
-    return node.as<std::string>();
+    return yaml_.AsString(Child(map, prefix, key), prefix + key);
   }
 
-  double Number(const YAML::Node& node, const std::string& key) const {
-    if (!node.IsScalar()) Fail(key, node, "expected a number.");
-    double value = 0.0;
-    try {
-      value = node.as<double>();
-    } catch (const YAML::Exception&) {
-      Fail(key, node, "expected a number, got '" + node.Scalar() + "'.");
-    }
-    if (!std::isfinite(value)) Fail(key, node, "expected a finite number, got '" + node.Scalar() + "'.");
-    return value;
-  }
+  double Number(const YAML::Node& node, const std::string& key) const { return yaml_.AsNumber(node, key); }
 
   double Number(const YAML::Node& map, const std::string& prefix, const std::string& key, double lo, double hi) const {
     const YAML::Node node = Child(map, prefix, key);
@@ -122,13 +96,7 @@ class Reader {
   }
 
   int Integer(const YAML::Node& map, const std::string& prefix, const std::string& key, int lo, int hi) const {
-    const YAML::Node node = Child(map, prefix, key);
-    const double value = Number(node, prefix + key);
-    if (value != std::floor(value) || value < lo || value > hi) {
-      Fail(prefix + key, node, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                                   "], got " + Num(value) + ".");
-    }
-    return static_cast<int>(value);
+    return static_cast<int>(yaml_.AsInteger(Child(map, prefix, key), prefix + key, lo, hi));
   }
 
   // [min, max] within [lo, hi] with min <= max (min < max unless equal is allowed).
@@ -148,17 +116,11 @@ class Reader {
 
   std::vector<std::string> Strings(const YAML::Node& map, const std::string& prefix, const std::string& key,
                                    std::size_t count) const {
-    const YAML::Node node = Child(map, prefix, key);
-    if (!node.IsSequence() || node.size() != count) {
-      Fail(prefix + key, node, "expected a list of " + std::to_string(count) + " names.");
-    }
-    std::vector<std::string> names;
-    for (const auto& item : node) names.push_back(item.as<std::string>());
-    return names;
+    return yaml_.Strings(Child(map, prefix, key), prefix + key, static_cast<int>(count));
   }
 
  private:
-  std::string file_;
+  const YamlReader& yaml_;
 };
 
 // Axis-aligned bounds of a collision shape in the world at the current poses.
@@ -194,16 +156,9 @@ double LegLength(double thigh, double shank, double knee_flexion) {
 WalkingModel::WalkingModel(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
 WalkingModel WalkingModel::Load(const std::string& yaml_path) {
-  const std::string yaml_text = ReadFile(yaml_path, "walking model YAML");
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& error) {
-    throw std::runtime_error(yaml_path + ": not valid YAML (line " + std::to_string(error.mark.line + 1) +
-                             "): " + error.msg);
-  }
-  const Reader r(yaml_path);
-  if (!root.IsMap()) r.Fail("<root>", root, "expected a map of keys; see data/robots/README.md.");
+  const YamlReader yaml(yaml_path);
+  const YAML::Node& root = yaml.root();
+  const Reader r(yaml);
   r.CheckKeys(root, "",
               {"name", "urdf", "pelvis_body", "sole_frames", "left_leg_joints", "right_leg_joints", "reach",
                "parameters", "knee_flexion_deg", "swing_height", "body_box", "leg_torque_grid", "motors"});
@@ -233,7 +188,7 @@ WalkingModel WalkingModel::Load(const std::string& yaml_path) {
   impl->name = name;
   impl->yaml_path = yaml_path;
   impl->urdf_path = urdf_path;
-  impl->hash = Fnv1a(urdf_text, Fnv1a(yaml_text));
+  impl->hash = Fnv1a64(urdf_text, Fnv1a64(yaml.text()));
   const multibody::Model& model = impl->model;
   impl->mass = model.total_mass();
   impl->gravity = model.gravity().norm();

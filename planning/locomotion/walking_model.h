@@ -50,9 +50,10 @@ class WalkingModel {
   static constexpr int kLegJoints = 6;
 
   /// Reads the walking YAML at `yaml_path` and the URDF it names (relative to the YAML's folder). Throws
-  /// std::runtime_error naming the file and the key for a missing file, a missing or malformed key, a number out
-  /// of its valid range (every number is validated) or a parameter range the leg geometry cannot realise
-  /// (the message gives the range the legs allow).
+  /// std::invalid_argument naming the file, the line and the key for an unreadable or malformed file, a missing,
+  /// unknown, repeated or mistyped key, a number out of its valid range (every number is validated) or a
+  /// parameter range the leg geometry cannot realise (the message gives the range the legs allow), and
+  /// std::runtime_error for a URDF that cannot be read or whose legs do not fit the keys.
   static WalkingModel Load(const std::string& yaml_path);
 
   /// Robot name (the YAML's `name`: 1 to 64 letters, digits, '_', '-' or '.', since it names cache files).

@@ -10,7 +10,7 @@ double ExplicitEulerIntegrator::DoStep(const System& system, Context* context, d
   x0_ = context->get_continuous_state_vector();
   EvalDerivatives(system, context, t0, x0_, &xdot_);
   context->SetTime(t1);
-  context->SetContinuousState(x0_ + (t1 - t0) * xdot_);
+  WriteContinuousState(context, x0_ + (t1 - t0) * xdot_);
   return t1;
 }
 

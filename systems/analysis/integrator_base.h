@@ -24,8 +24,11 @@ class IntegratorBase {
   /// Short name for messages and logs ("rk4", ...).
   virtual std::string name() const = 0;
 
-  /// Advances `context` (time and continuous state) by one step towards `t_max` (> current time) and returns
-  /// the time reached, which is `t_max` exactly when the step ends there.
+  /// Advances `context` (time and continuous state) by one step towards `t_max` (finite, > current time) and
+  /// returns the time reached, which is `t_max` exactly when the step ends there. Throws std::invalid_argument
+  /// when the maximum step size cannot advance time at the current time (t + h == t in double precision, which
+  /// would otherwise repeat the step forever), and std::runtime_error when the step leaves a non-finite state
+  /// (the simulation diverged) or did not advance time.
   double Step(const System& system, Context* context, double t_max);
 
   /// The largest step; throws std::invalid_argument unless finite and > 0.
@@ -54,6 +57,8 @@ class IntegratorBase {
   /// Derivatives at (t, x); sets them in the context first. Counts evaluations.
   void EvalDerivatives(const System& system, Context* context, double t, const Eigen::VectorXd& x,
                        Eigen::VectorXd* xdot);
+  /// Writes the continuous state of `context` without the finiteness check of Context::SetContinuousState.
+  static void WriteContinuousState(Context* context, const Eigen::VectorXd& x);
   void count_rejection() { ++num_step_rejections_; }
 
  private:

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "cairn/common/number_text.h"
 
 namespace cairn::systems {
 namespace {
@@ -31,7 +34,7 @@ RungeKutta45Integrator::RungeKutta45Integrator(double maximum_step_size, double 
 
 void RungeKutta45Integrator::set_minimum_step_size(double h) {
   if (!(h > 0.0) || !std::isfinite(h)) {
-    throw std::invalid_argument("The minimum step size must be finite and > 0; got " + std::to_string(h) + ".");
+    throw std::invalid_argument("The minimum step size must be finite and > 0; got " + FormatShort(h) + ".");
   }
   minimum_step_size_ = h;
 }
@@ -43,6 +46,9 @@ double RungeKutta45Integrator::DoStep(const System& system, Context* context, do
   const double accuracy = target_accuracy();
   while (true) {
     double h = std::min(next_step_, maximum_step_size());
+    // A trial step too small to move time (late in a long simulation) is raised to the largest allowed;
+    // Step() has checked that that one advances.
+    if (!(t0 + h > t0)) h = maximum_step_size();
     // Land on t_max rather than leave a sliver for the next step.
     const bool reaches_end = t_max - t0 <= 1.01 * h;
     if (reaches_end) h = t_max - t0;
@@ -54,10 +60,13 @@ double RungeKutta45Integrator::DoStep(const System& system, Context* context, do
     // The last stage was evaluated at the fifth-order solution itself (FSAL row), so x5_ holds it now.
     error_.setZero(x0_.size());
     for (int stage = 0; stage < 7; ++stage) error_ += h * kE[stage] * k_[stage];
-    double error_norm = 0.0;
-    for (Eigen::Index i = 0; i < x0_.size(); ++i) {
+    // A trial solution or error that overflowed counts as an infinite error (std::max would drop a NaN), so
+    // the step is rejected and shrunk rather than accepted.
+    double error_norm = x5_.allFinite() ? 0.0 : std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < x0_.size() && std::isfinite(error_norm); ++i) {
       const double scale = accuracy * (1.0 + std::max(std::abs(x0_[i]), std::abs(x5_[i])));
-      error_norm = std::max(error_norm, std::abs(error_[i]) / scale);
+      const double e = std::abs(error_[i]) / scale;
+      error_norm = std::isnan(e) ? std::numeric_limits<double>::infinity() : std::max(error_norm, e);
     }
     const bool finite = std::isfinite(error_norm);
     const double factor = !finite ? 0.2 : error_norm == 0.0 ? 5.0 : std::clamp(0.9 * std::pow(error_norm, -0.2), 0.2, 5.0);
@@ -66,16 +75,16 @@ double RungeKutta45Integrator::DoStep(const System& system, Context* context, do
       // A step shortened to land on t_max says little about the step size the dynamics allow.
       next_step_ = reaches_end ? std::max(next_step_, h * factor) : h * factor;
       context->SetTime(t1);
-      context->SetContinuousState(x5_);
+      WriteContinuousState(context, x5_);
       return t1;
     }
     count_rejection();
     next_step_ = h * factor;
-    if (next_step_ < minimum_step_size_) {
-      throw std::runtime_error("RungeKutta45Integrator: at t = " + std::to_string(t0) + " the step size fell to " +
-                               std::to_string(next_step_) + ", below the minimum " +
-                               std::to_string(minimum_step_size_) + ", without meeting the accuracy " +
-                               std::to_string(accuracy) +
+    if (next_step_ < minimum_step_size_ || !(t0 + next_step_ > t0)) {
+      throw std::runtime_error("RungeKutta45Integrator: at t = " + FormatShort(t0) + " the step size fell to " +
+                               FormatShort(next_step_) + ", below the minimum " + FormatShort(minimum_step_size_) +
+                               " (or too small to advance time there), without meeting the accuracy " +
+                               FormatShort(accuracy) +
                                "; loosen the accuracy or check the system for discontinuities or a blow-up.");
     }
   }

@@ -16,7 +16,8 @@ class RungeKutta45Integrator final : public IntegratorBase {
   std::string name() const override { return "rk45"; }
   bool supports_error_control() const override { return true; }
 
-  /// Steps below this are refused (the error cannot be met): throws std::runtime_error naming time and step.
+  /// Steps below this, or too small to advance time at the current time, are refused (the error cannot be met):
+  /// throws std::runtime_error naming time and step. `h` must be finite and > 0.
   void set_minimum_step_size(double h);
   double minimum_step_size() const { return minimum_step_size_; }
 

@@ -14,7 +14,7 @@ double RungeKutta4Integrator::DoStep(const System& system, Context* context, dou
   EvalDerivatives(system, context, t0 + 0.5 * h, x0_ + 0.5 * h * k2_, &k3_);
   EvalDerivatives(system, context, t1, x0_ + h * k3_, &k4_);
   context->SetTime(t1);
-  context->SetContinuousState(x0_ + (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_));
+  WriteContinuousState(context, x0_ + (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_));
   return t1;
 }
 

@@ -8,6 +8,7 @@
 #include <thread>
 #include <utility>
 
+#include "cairn/common/number_text.h"
 #include "cairn/systems/analysis/runge_kutta4_integrator.h"
 #include "cairn/systems/framework/leaf_system.h"
 
@@ -27,15 +28,21 @@ double NextOccurrence(const PeriodicEventData& timing, double time, bool inclusi
   if (time < timing.offset || (inclusive && SameTime(time, timing.offset))) {
     return timing.offset;
   }
-  double k = std::floor((time - timing.offset) / timing.period);
-  for (;; k += 1.0) {
-    const double candidate = timing.offset + k * timing.period;
+  // In exact arithmetic k0 or k0 + 1 is the answer; rounding may need one more. A period so small against
+  // `time` that none of these is later would make k + 1 == k, so the search is bounded and reports that.
+  const double k0 = std::floor((time - timing.offset) / timing.period);
+  for (int i = 0; i < 4; ++i) {
+    const double candidate = timing.offset + (k0 + i) * timing.period;
     if (SameTime(candidate, time)) {
       if (inclusive) return candidate;
       continue;
     }
     if (candidate > time) return candidate;
   }
+  throw std::runtime_error("A periodic event with period " + FormatShort(timing.period) +
+                           " s cannot be told apart from the next at t = " + FormatShort(time) +
+                           " (event times closer than 1e-12 relative coincide); use a longer period or start "
+                           "nearer t = 0.");
 }
 
 void Split(const std::vector<internal::TriggeredEvent>& events, EventKind kind,
@@ -62,7 +69,7 @@ Simulator::~Simulator() = default;
 void Simulator::set_target_realtime_rate(double rate) {
   if (!(rate >= 0.0) || !std::isfinite(rate)) {
     throw std::invalid_argument("The target real-time rate must be finite and >= 0 (0 = as fast as possible); got " +
-                                std::to_string(rate) + ".");
+                                FormatShort(rate) + ".");
   }
   realtime_rate_ = rate;
   wall_start_ = std::chrono::steady_clock::now();
@@ -154,15 +161,75 @@ void Simulator::PaceRealTime() {
   std::this_thread::sleep_until(target);
 }
 
+void Simulator::set_step_limit(int64_t steps) {
+  if (steps < 1) {
+    throw std::invalid_argument("Simulator::set_step_limit: the limit must be >= 1 step; got " +
+                                std::to_string(steps) + ".");
+  }
+  step_limit_ = steps;
+}
+
+void Simulator::CheckStepBudget(double t_final) {
+  const double t = context_->get_time();
+  const double span = t_final - t;
+  if (span <= 0.0) return;
+  // A lower bound on the steps: every step is at most the maximum step size, and the simulator stops at every
+  // event time.
+  double steps = 0.0;
+  std::string cause;
+  if (system_.num_continuous_states() > 0) {
+    steps = span / integrator_->maximum_step_size();
+    cause = "integrator steps of at most " + FormatShort(integrator_->maximum_step_size()) + " s";
+  }
+  const std::vector<LeafAndContext> leaves = initialized_ ? leaves_ : system_.CollectLeafSystems(context_.get());
+  for (const LeafAndContext& leaf : leaves) {
+    for (const Event& event : leaf.system->declared_events()) {
+      if (event.trigger != TriggerType::kPeriodic) continue;
+      const double period = event.periodic.period;
+      if (span / period > steps) {
+        steps = span / period;
+        cause = "a periodic event of '" + leaf.system->GetPathName() + "' every " + FormatShort(period) + " s";
+      }
+    }
+  }
+  if (steps > static_cast<double>(step_limit_)) {
+    throw std::invalid_argument("AdvanceTo(" + FormatShort(t_final) + "): simulating " + FormatShort(span) +
+                                " s from t = " + FormatShort(t) + " takes at least " + FormatShort(steps) +
+                                " steps (" + cause + "), more than the limit of " + std::to_string(step_limit_) +
+                                " (Simulator::set_step_limit); shorten the simulated time or lengthen the step or "
+                                "period.");
+  }
+  for (const LeafAndContext& leaf : leaves) {
+    for (const Event& event : leaf.system->declared_events()) {
+      if (event.trigger != TriggerType::kPeriodic || !SameTime(t_final + event.periodic.period, t_final)) continue;
+      throw std::invalid_argument("AdvanceTo(" + FormatShort(t_final) + "): the period " +
+                                  FormatShort(event.periodic.period) + " s of a periodic event of '" +
+                                  leaf.system->GetPathName() +
+                                  "' is below the time resolution there (event times closer than 1e-12 relative "
+                                  "coincide); use a longer period or a shorter simulation.");
+    }
+  }
+}
+
 SimulatorStatus Simulator::AdvanceTo(double t_final) {
   if (!std::isfinite(t_final) || t_final < context_->get_time()) {
-    throw std::invalid_argument("AdvanceTo(" + std::to_string(t_final) + "): the time must be finite and not before "
-                                "the current time " + std::to_string(context_->get_time()) + ".");
+    throw std::invalid_argument("AdvanceTo(" + FormatShort(t_final) + "): the time must be finite and not before "
+                                "the current time " + FormatShort(context_->get_time()) + ".");
   }
+  CheckStepBudget(t_final);
   if (!initialized_) Initialize();
   SimulatorStatus status;
   std::vector<internal::TriggeredEvent> due;
+  int64_t steps_here = 0;
   while (context_->get_time() < t_final) {
+    if (steps_here == step_limit_) {
+      throw std::runtime_error("AdvanceTo(" + FormatShort(t_final) + ") took " + std::to_string(step_limit_) +
+                               " steps, the limit (Simulator::set_step_limit), and reached only t = " +
+                               FormatShort(context_->get_time()) +
+                               "; the integrator's steps are small (loosen its accuracy or check the dynamics), "
+                               "or raise the limit.");
+    }
+    ++steps_here;
     // The context may have been changed since the last step; the set of leaves cannot, the events can't either.
     ApplyUpdates(pending_updates_);
     pending_updates_.clear();

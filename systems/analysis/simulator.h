@@ -39,16 +39,35 @@ struct SimulatorStatus {
 /// events land exactly on offset + k * period.
 ///
 /// The default integrator is RK4 with a 1 ms maximum step.
+///
+/// Every AdvanceTo() is bounded by a step limit (kDefaultStepLimit unless set_step_limit() says otherwise): a
+/// run that needs more steps than the limit, judged before it starts from the maximum step size and the event
+/// periods, is refused with std::invalid_argument, and one that reaches the limit anyway (an error-controlled
+/// integrator taking small steps) stops with std::runtime_error. So a tiny step or a huge end time is an error
+/// message, not a run that never finishes.
 class Simulator {
  public:
+  /// Steps one AdvanceTo() may take unless set_step_limit() says otherwise: 100 million (minutes of a small
+  /// diagram; hours of a large one).
+  static constexpr int64_t kDefaultStepLimit = 100'000'000;
+
   /// Simulates `system` from `context` (default: a new default context). The system must outlive the simulator.
   explicit Simulator(const System& system, std::unique_ptr<Context> context = nullptr);
   ~Simulator();
 
   /// Runs initialization events; called by AdvanceTo() if not called before.
   void Initialize();
-  /// Advances to time `t_final` (>= current time), or until the monitor stops the run.
+  /// Advances to time `t_final` (finite, >= current time), or until the monitor stops the run. Throws
+  /// std::invalid_argument before running if reaching t_final needs more than step_limit() steps (at least
+  /// (t_final - t) / h with continuous state and maximum step h, and (t_final - t) / period for each periodic
+  /// event), or if an event period is below the time resolution at t_final (period <= 1e-12 |t_final|, the
+  /// relative tolerance at which event times coincide); throws std::runtime_error if the run reaches the step
+  /// limit anyway.
   SimulatorStatus AdvanceTo(double t_final);
+
+  /// Most steps one AdvanceTo() may take; throws std::invalid_argument unless `steps` >= 1.
+  void set_step_limit(int64_t steps);
+  int64_t step_limit() const { return step_limit_; }
 
   /// Replaces the integrator (e.g. RungeKutta45Integrator). Returns a reference to it.
   template <class I, typename... Args>
@@ -83,6 +102,7 @@ class Simulator {
   void Publish(const std::vector<internal::TriggeredEvent>& timed);
   bool CallMonitor(SimulatorStatus* status);
   void PaceRealTime();
+  void CheckStepBudget(double t_final);
 
   const System& system_;
   std::unique_ptr<Context> context_;
@@ -90,6 +110,7 @@ class Simulator {
   std::function<MonitorResult(const Context&)> monitor_;
   double realtime_rate_{0.0};
   bool initialized_{false};
+  int64_t step_limit_{kDefaultStepLimit};
 
   std::vector<LeafAndContext> leaves_;
   std::vector<internal::TriggeredEvent> per_step_updates_;

@@ -1,15 +1,31 @@
 #include "cairn/systems/framework/context.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "cairn/common/cairn_assert.h"
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/system.h"
 
 namespace cairn::systems {
 
 using internal::BuiltInTicket;
+
+namespace {
+
+// States that users set must be finite: a NaN or infinite state only produces NaN downstream.
+void CheckFinite(const Eigen::Ref<const Eigen::VectorXd>& x, const std::string& what) {
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i])) {
+      throw std::invalid_argument(what + ": element " + std::to_string(i) + " is " + FormatShort(x[i]) +
+                                  "; states must be finite.");
+    }
+  }
+}
+
+}  // namespace
 
 Context::Context(const System* system, int num_tickets)
     : system_(system),
@@ -94,6 +110,10 @@ void Context::SetTime(double time) {
     throw std::logic_error("SetTime() was called on the subcontext of '" + system_path_name_ +
                            "'; set the time of the root (diagram) context, which all subcontexts share.");
   }
+  if (!std::isfinite(time)) {
+    throw std::invalid_argument("SetTime(" + FormatShort(time) + ") on the context of '" + system_path_name_ +
+                                "': the time must be finite.");
+  }
   SetTimeRecursive(time, DependencyTracker::NewChangeEvent());
 }
 
@@ -119,6 +139,7 @@ void Context::SetContinuousState(const Eigen::Ref<const Eigen::VectorXd>& x) {
                                 std::to_string(xc_size_) + " but was given a vector of size " +
                                 std::to_string(x.size()) + ".");
   }
+  CheckFinite(x, "SetContinuousState on the context of '" + system_path_name_ + "'");
   get_mutable_continuous_state_vector() = x;
 }
 
@@ -164,6 +185,7 @@ Eigen::VectorXd& Context::get_mutable_discrete_state(int group) {
 
 void Context::SetDiscreteState(int group, const Eigen::Ref<const Eigen::VectorXd>& value) {
   ThrowIfNotLeafState("discrete state", group, xd_.num_groups());
+  CheckFinite(value, "SetDiscreteState(" + std::to_string(group) + ") on the context of '" + system_path_name_ + "'");
   xd_.set_value(group, value);
   NoteChange(xd_tickets_[group]);
 }

@@ -46,7 +46,7 @@ class Context {
   // ---------------------------------------------------------------------------------------------------------------
   /// @name Time
   double get_time() const { return time_; }
-  /// Sets the time of this context and all its subcontexts.
+  /// Sets the time of this context and all its subcontexts; throws std::invalid_argument unless `time` is finite.
   void SetTime(double time);
 
   // ---------------------------------------------------------------------------------------------------------------
@@ -55,7 +55,7 @@ class Context {
   Eigen::VectorBlock<const Eigen::VectorXd> get_continuous_state_vector() const;
   /// Returns the state for writing; counts as a change of it.
   Eigen::VectorBlock<Eigen::VectorXd> get_mutable_continuous_state_vector();
-  /// Throws std::invalid_argument if the size differs.
+  /// Throws std::invalid_argument if the size differs or an element is NaN or infinite (naming it).
   void SetContinuousState(const Eigen::Ref<const Eigen::VectorXd>& x);
 
   // ---------------------------------------------------------------------------------------------------------------
@@ -64,8 +64,10 @@ class Context {
   const DiscreteValues& get_discrete_state() const { return xd_; }
   const Eigen::VectorXd& get_discrete_state(int group) const;
   Eigen::VectorXd& get_mutable_discrete_state(int group);
+  /// Sets group `group`; throws std::invalid_argument if the size differs or an element is NaN or infinite.
   void SetDiscreteState(int group, const Eigen::Ref<const Eigen::VectorXd>& value);
-  /// Sets every group (e.g. from a discrete update's result).
+  /// Sets every group (e.g. from a discrete update's result). Values are not checked for finiteness: updates
+  /// compute them, and a diverging one shows in the continuous state, which the integrators check.
   void SetDiscreteState(const DiscreteValues& values);
 
   /// A copy of this leaf context's whole state (as unrestricted update events receive it).

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "cairn/common/cairn_assert.h"
+#include "cairn/common/number_text.h"
 
 namespace cairn::systems {
 
@@ -72,11 +73,13 @@ void LeafSystem::DeclareContinuousState(const Eigen::VectorXd& initial_value) {
     throw std::logic_error("System '" + GetPathName() +
                            "' declares continuous state twice; declare it once with its full size.");
   }
+  CheckFiniteInitialValue("continuous state", initial_value);
   has_continuous_state_ = true;
   xc_initial_ = initial_value;
 }
 
 int LeafSystem::DeclareDiscreteState(const Eigen::VectorXd& initial_value) {
+  CheckFiniteInitialValue("discrete state", initial_value);
   xd_initial_.push_back(initial_value);
   xd_tickets_.push_back(NewTicket());
   return static_cast<int>(xd_initial_.size()) - 1;
@@ -123,14 +126,23 @@ AbstractValue& LeafSystem::MutablePerContextStorage(const Context& context, int 
   return *context.per_context_storage_[index];
 }
 
+void LeafSystem::CheckFiniteInitialValue(const char* what, const Eigen::VectorXd& value) const {
+  for (Eigen::Index i = 0; i < value.size(); ++i) {
+    if (!std::isfinite(value[i])) {
+      throw std::invalid_argument("System '" + GetPathName() + "': the initial " + what + " has element " +
+                                  std::to_string(i) + " = " + FormatShort(value[i]) + "; states must be finite.");
+    }
+  }
+}
+
 void LeafSystem::DeclarePeriodic(double period, double offset, Event event) {
   if (!(period > 0.0) || !std::isfinite(period)) {
     throw std::invalid_argument("System '" + GetPathName() + "': a periodic event needs a finite period > 0; got " +
-                                std::to_string(period) + ".");
+                                FormatShort(period) + ".");
   }
   if (!(offset >= 0.0) || !std::isfinite(offset)) {
     throw std::invalid_argument("System '" + GetPathName() + "': a periodic event needs a finite offset >= 0; got " +
-                                std::to_string(offset) + ".");
+                                FormatShort(offset) + ".");
   }
   event.periodic = PeriodicEventData{period, offset};
   DeclareEvent(TriggerType::kPeriodic, std::move(event));

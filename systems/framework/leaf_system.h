@@ -91,8 +91,10 @@ class LeafSystem : public System {
 
   // ---------------------------------------------------------------------------------------------------------------
   /// @name State and parameters; each returns the index of what it declared.
-  /// Declares the continuous state (once per system) with its initial value.
+  /// Declares the continuous state (once per system) with its initial value, which must be finite (throws
+  /// std::invalid_argument naming the element otherwise).
   void DeclareContinuousState(const Eigen::VectorXd& initial_value);
+  /// Declares a discrete state group with its initial value, which must be finite.
   int DeclareDiscreteState(const Eigen::VectorXd& initial_value);
   int DeclareAbstractState(const AbstractValue& initial_value);
   int DeclareNumericParameter(const Eigen::VectorXd& default_value);
@@ -227,6 +229,7 @@ class LeafSystem : public System {
                                         Prerequisites prerequisites);
   AbstractValue& MutablePerContextStorage(const Context& context, int index) const;
   void CheckPrerequisites(const std::string& what, const Prerequisites& prerequisites) const;
+  void CheckFiniteInitialValue(const char* what, const Eigen::VectorXd& value) const;
   bool DependsOnInput(const Prerequisites& prerequisites, DependencyTicket input, int depth) const;
   const CachedComputation* FindCachedComputation(DependencyTicket ticket) const;
 

@@ -14,9 +14,9 @@ namespace cairn::systems {
 /// | output `y` | vector of size n | k ⊙ u (direct feedthrough) |
 class Gain final : public LeafSystem {
  public:
-  /// The same gain `k` on all `size` elements.
+  /// The same gain `k` on all `size` elements. Throws std::invalid_argument unless k is finite and size >= 1.
   Gain(double k, int size);
-  /// A gain per element.
+  /// A gain per element; throws std::invalid_argument for an empty vector or a NaN or infinite element.
   explicit Gain(const Eigen::VectorXd& k);
 
   const Eigen::VectorXd& k() const { return k_; }

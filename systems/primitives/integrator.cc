@@ -1,7 +1,10 @@
 #include "cairn/systems/primitives/integrator.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "cairn/common/number_text.h"
 
 namespace cairn::systems {
 
@@ -12,6 +15,12 @@ Integrator::Integrator(int size) : Integrator(Eigen::VectorXd::Zero(size < 1 ? 1
 Integrator::Integrator(const Eigen::VectorXd& initial_value) {
   const int size = static_cast<int>(initial_value.size());
   if (size < 1) throw std::invalid_argument("Integrator: the initial value must not be empty.");
+  for (int i = 0; i < size; ++i) {
+    if (!std::isfinite(initial_value[i])) {
+      throw std::invalid_argument("Integrator: initial value element " + std::to_string(i) + " is " +
+                                  FormatShort(initial_value[i]) + "; it must be finite.");
+    }
+  }
   DeclareVectorInputPort("u", size);
   DeclareContinuousState(initial_value);
   DeclareVectorOutputPort(

@@ -17,6 +17,7 @@ namespace cairn::systems {
 class Integrator final : public LeafSystem {
  public:
   explicit Integrator(int size);
+  /// Starts at `initial_value` (not empty, every element finite; throws std::invalid_argument otherwise).
   explicit Integrator(const Eigen::VectorXd& initial_value);
 
  private:

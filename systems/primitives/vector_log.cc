@@ -1,11 +1,21 @@
 #include "cairn/systems/primitives/vector_log.h"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "cairn/common/atomic_file.h"
+#include "cairn/common/number_text.h"
 
 namespace cairn::systems {
+
+VectorLog::VectorLog(int size, int capacity) : size_(size), capacity_(capacity) {
+  if (size < 0) throw std::invalid_argument("VectorLog: size must be >= 0; got " + std::to_string(size) + ".");
+  if (capacity < 1) {
+    throw std::invalid_argument("VectorLog: capacity must be >= 1 sample; got " + std::to_string(capacity) + ".");
+  }
+}
 
 Eigen::Map<const Eigen::VectorXd> VectorLog::sample_times() const {
   return Eigen::Map<const Eigen::VectorXd>(times_.data(), num_samples());
@@ -19,6 +29,15 @@ void VectorLog::AddData(double time, const Eigen::Ref<const Eigen::VectorXd>& va
   if (value.size() != size_) {
     throw std::invalid_argument("VectorLog of size " + std::to_string(size_) + " was given a sample of size " +
                                 std::to_string(value.size()) + ".");
+  }
+  if (!std::isfinite(time)) {
+    throw std::invalid_argument("VectorLog: the sample time " + FormatShort(time) + " must be finite.");
+  }
+  if (num_samples() >= capacity_) {
+    throw std::runtime_error("VectorLog of size " + std::to_string(size_) + " is full: it holds its capacity of " +
+                             std::to_string(capacity_) + " samples (reached at t = " + FormatShort(time) +
+                             "); log less often (a publish period instead of every step, or a longer one), simulate "
+                             "a shorter time, or give the VectorLogSink a larger capacity.");
   }
   times_.push_back(time);
   values_.insert(values_.end(), value.data(), value.data() + value.size());

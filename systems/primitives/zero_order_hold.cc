@@ -1,11 +1,25 @@
 #include "cairn/systems/primitives/zero_order_hold.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
-namespace cairn::systems {
+#include "cairn/common/number_text.h"
 
-ZeroOrderHold::ZeroOrderHold(double period, int size) : period_(period) {
+namespace cairn::systems {
+namespace {
+
+double CheckedPeriod(double period) {
+  if (!(period > 0.0) || !std::isfinite(period)) {
+    throw std::invalid_argument("ZeroOrderHold: the sampling period must be finite and > 0; got " +
+                                FormatShort(period) + ".");
+  }
+  return period;
+}
+
+}  // namespace
+
+ZeroOrderHold::ZeroOrderHold(double period, int size) : period_(CheckedPeriod(period)) {
   if (size < 1) throw std::invalid_argument("ZeroOrderHold: size must be positive; got " + std::to_string(size) + ".");
   DeclareVectorInputPort("u", size);
   const int held = DeclareDiscreteState(Eigen::VectorXd::Zero(size));
@@ -17,7 +31,7 @@ ZeroOrderHold::ZeroOrderHold(double period, int size) : period_(period) {
   });
 }
 
-ZeroOrderHold::ZeroOrderHold(double period, const AbstractValue& model_value) : period_(period) {
+ZeroOrderHold::ZeroOrderHold(double period, const AbstractValue& model_value) : period_(CheckedPeriod(period)) {
   DeclareAbstractInputPort("u", model_value);
   const int held = DeclareAbstractState(model_value);
   DeclareAbstractOutputPort(

@@ -17,7 +17,7 @@ namespace cairn::systems {
 /// State: the held sample (discrete state for vectors, abstract state for abstract values).
 class ZeroOrderHold final : public LeafSystem {
  public:
-  /// A vector hold of `size` elements.
+  /// A vector hold of `size` elements. Throws std::invalid_argument unless `period` is finite and > 0.
   ZeroOrderHold(double period, int size);
   /// An abstract hold for values of `model_value`'s type, holding `model_value` until the first sample.
   ZeroOrderHold(double period, const AbstractValue& model_value);

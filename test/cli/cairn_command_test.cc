@@ -47,7 +47,8 @@ TEST(CairnCommandTest, UsageErrorsExitWithTwoAndPrintUsage) {
 TEST(CairnCommandTest, FailingCommandExitsWithOneAndAOneLineReason) {
   const CairnRun run = RunCairn("pendulum --duration 0.01 --csv /nonexistent_cairn_dir/log.csv");
   EXPECT_EQ(run.exit_code, 1);
-  EXPECT_THAT(run.output, HasSubstr("cairn pendulum: error: Cannot write '/nonexistent_cairn_dir/log.csv'"));
+  EXPECT_THAT(run.output, HasSubstr("cairn pendulum: error: --csv '/nonexistent_cairn_dir/log.csv' cannot be written: "
+                                    "its folder '/nonexistent_cairn_dir' does not exist"));
   EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
 }
 

@@ -60,10 +60,10 @@ TEST_F(FrictionCommandTest, BadInputsExitWithOneAndSayWhy) {
   const std::string out = (dir_ / "out").string();
   CairnRun run = RunCairn("friction --image /nonexistent.png --out " + out);
   EXPECT_EQ(run.exit_code, 1);
-  EXPECT_THAT(run.output, HasSubstr("Cannot read the image '/nonexistent.png'"));
+  EXPECT_THAT(run.output, HasSubstr("--image '/nonexistent.png' does not exist"));
   run = RunCairn("friction --image " + image_ + " --eta 1.5 --out " + out);
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_THAT(run.output, HasSubstr("must be in (0, 1); got 1.5"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.output, HasSubstr("--eta '1.5' is out of range; give a number from 1e-06 to 0.999999"));
   run = RunCairn("friction --image " + image_ + " --segmenter magic --out " + out);
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_THAT(run.output, HasSubstr("Unknown segmenter 'magic'"));

@@ -46,7 +46,7 @@ TEST(ModelInfoCommandTest, BadFilePrintsTheParserMessageAndExitsOne) {
   EXPECT_THAT(broken.output, HasSubstr("neck_ry"));
   const CairnRun missing = RunCairn("model-info /no/such/robot.urdf");
   EXPECT_EQ(missing.exit_code, 1);
-  EXPECT_THAT(missing.output, HasSubstr("cannot open"));
+  EXPECT_THAT(missing.output, HasSubstr("the URDF '/no/such/robot.urdf' does not exist"));
   const CairnRun spec = RunCairn("model-info " + kDart + "/urdf/drchubo/drchubo.urdf --package drchubo");
   EXPECT_EQ(spec.exit_code, 1);
   EXPECT_THAT(spec.output, HasSubstr("name=path"));

@@ -43,16 +43,23 @@ TEST(PerceptionCommandsTest, StereoEvalPrintsTheMeasuresAsTextAndJson) {
   EXPECT_EQ(json.output.front(), '{');
 }
 
+TEST(PerceptionCommandsTest, StereoEvalJsonKeepsSmallParameters) {
+  // "%f" printed 1e-300 as 0.000000.
+  const CairnRun json = RunCairn(VenusPair() + " --dmax 31 --model exp --params 1e-300 --json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  EXPECT_THAT(json.output, HasSubstr("\"parameter\": 1e-300,"));
+}
+
 TEST(PerceptionCommandsTest, StereoEvalBadInputExitsWithOneAndSaysWhy) {
   const CairnRun missing = RunCairn("stereo-eval --left " + Venus("im2.png") + " --right /no/such.png --gt " +
                             Venus("disp2.png") + " --gt-scale 8");
   EXPECT_EQ(missing.exit_code, 1);
-  EXPECT_THAT(missing.output, HasSubstr("cannot open image '/no/such.png'"));
+  EXPECT_THAT(missing.output, HasSubstr("--right '/no/such.png' does not exist"));
   const CairnRun even = RunCairn(VenusPair() + " --window 8");
-  EXPECT_EQ(even.exit_code, 1);
-  EXPECT_THAT(even.output, HasSubstr("window 8 must be odd"));
+  EXPECT_EQ(even.exit_code, 2);
+  EXPECT_THAT(even.output, HasSubstr("--window '8' is even"));
   const CairnRun model = RunCairn(VenusPair() + " --model merel");
-  EXPECT_EQ(model.exit_code, 1);
+  EXPECT_EQ(model.exit_code, 2);
   EXPECT_THAT(model.output, HasSubstr("did you mean 'merrell'?"));
   const CairnRun size = RunCairn("stereo-eval --left " + Venus("im2.png") + " --right " + std::string(CAIRN_SHARED_DIR) +
                          "/data/middlebury/tsukuba/im6.png --gt " + Venus("disp2.png") + " --gt-scale 8");
@@ -84,14 +91,14 @@ TEST(PerceptionCommandsTest, OccupancyPrintsPrecisionAndRecallPerFrame) {
 
 TEST(PerceptionCommandsTest, OccupancyBadInputExitsWithOneOrTwo) {
   const CairnRun model = RunCairn("occupancy --model gaussian --frames 1");
-  EXPECT_EQ(model.exit_code, 1);
-  EXPECT_THAT(model.output, HasSubstr("unknown occupancy model 'gaussian'"));
+  EXPECT_EQ(model.exit_code, 2);
+  EXPECT_THAT(model.output, HasSubstr("--model 'gaussian' is not one of"));
   const CairnRun scenario = RunCairn("occupancy --scenario /no/such.yaml --frames 1");
   EXPECT_EQ(scenario.exit_code, 1);
-  EXPECT_THAT(scenario.output, HasSubstr("'/no/such.yaml' cannot be read"));
+  EXPECT_THAT(scenario.output, HasSubstr("--scenario '/no/such.yaml' does not exist"));
   const CairnRun frames = RunCairn("occupancy --frames 0");
-  EXPECT_EQ(frames.exit_code, 1);
-  EXPECT_THAT(frames.output, HasSubstr("0 frames"));
+  EXPECT_EQ(frames.exit_code, 2);
+  EXPECT_THAT(frames.output, HasSubstr("--frames '0' is out of range; give an integer from 1 to 1000"));
   const CairnRun flag = RunCairn("occupancy --bogus");
   EXPECT_EQ(flag.exit_code, 2);
   EXPECT_THAT(flag.output, HasSubstr("--bogus"));

@@ -4,17 +4,22 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "../planning/support/shared_oracle.h"
 #include "run_cairn.h"
+#include "run_cairn_streams.h"
 
 namespace {
 
 using cairn::test::CairnRun;
+using cairn::test::CairnStreams;
 using cairn::test::RunCairn;
+using cairn::test::RunCairnStreams;
+using ::testing::Not;
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
@@ -30,6 +35,39 @@ class PlanCommandTest : public ::testing::Test {
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
+
+  // A scenario for a copy of the humanoid whose reach is cut to a few centimetres: its oracle has 288 entries
+  // and builds in about a second, so tests can build it afresh. No step reaches the goal, 0.5 m ahead.
+  fs::path TinyRobotScenario() {
+    std::ifstream in(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_walking.yaml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string robot = text.str();
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"urdf: cairn_humanoid.urdf",
+                                                                       "urdf: " + std::string(CAIRN_SOURCE_DIR) +
+                                                                           "/data/robots/cairn_humanoid.urdf #"},
+                                   {"dx: [0.0, 0.38]", "dx: [0.0, 0.1]"},
+                                   {"dy: [0.17, 0.30]", "dy: [0.17, 0.2]"},
+                                   {"dz: [-0.15, 0.15]", "dz: [0.0, 0.05]"},
+                                   {"dtheta_deg: [0.0, 30.0]", "dtheta_deg: [0.0, 15.0]"}}) {
+      const auto at = robot.find(from);
+      EXPECT_NE(at, std::string::npos) << from;
+      if (at != std::string::npos) robot.replace(at, from.size(), to);
+    }
+    std::ofstream(dir_ / "tiny_robot.yaml") << robot;
+    const fs::path scenario = dir_ / "tiny.yaml";
+    std::ofstream(scenario) << "name: tiny\nrobot: " << (dir_ / "tiny_robot.yaml").string() << R"(
+terrain:
+  min: [-0.5, -1.0]
+  max: [1.0, 1.0]
+  regions:
+    - {name: floor, box: {min: [-0.5, -1.0], max: [1.0, 1.0]}, friction: 1.0}
+start: {left: [0.0, 0.1, 0], right: [0.0, -0.1, 0]}
+goal: {left: [0.5, 0.1, 0], right: [0.5, -0.1, 0], tolerance: 0.05}
+planner: {time_limit: 5, max_expansions: 2000}
+)";
+    return scenario;
+  }
   fs::path dir_;
 };
 
@@ -84,9 +122,75 @@ TEST_F(PlanCommandTest, RejectsBadInputClearly) {
   EXPECT_THAT(run.output, HasSubstr("energy"));
   run = RunCairn("plan --scenario /nonexistent.yaml");
   EXPECT_EQ(run.exit_code, 1) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("Cannot read '/nonexistent.yaml'"));
+  EXPECT_THAT(run.output, HasSubstr("--scenario '/nonexistent.yaml' does not exist"));
   run = RunCairn("plan --scenario " + kScenarios + "flat.yaml --time-limit -3");
   EXPECT_EQ(run.exit_code, 2) << run.output;
+}
+
+TEST_F(PlanCommandTest, AnUnwritableOutFailsBeforeTheOracleAndTheSearch) {
+  std::ofstream(dir_ / "a_file") << "x";
+  const fs::path cache = dir_ / "fresh-cache";
+  // With a time limit of ten minutes: it used to plan for all of it and then fail without printing the plan.
+  const std::string out = (dir_ / "a_file" / "plan").string();
+  const CairnStreams run = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --time-limit 600 " +
+                                           "--oracle-cache " + cache.string() + " --out " + out);
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(run.err_lines(), 1) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("cairn plan: error: Cannot write the folder '" + out + "'"));
+  EXPECT_THAT(run.err, Not(HasSubstr("oracle")));
+  EXPECT_FALSE(fs::exists(cache)) << "the oracle was not even looked for";
+  // A folder holding files plan does not write is refused the same way, and kept.
+  fs::create_directories(dir_ / "results");
+  std::ofstream(dir_ / "results" / "notes.txt") << "mine";
+  const CairnStreams kept = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --oracle-cache " +
+                                            cache.string() + " --out " + (dir_ / "results").string());
+  EXPECT_EQ(kept.exit_code, 1);
+  EXPECT_THAT(kept.err, HasSubstr("it holds 'notes.txt', which this command does not write"));
+  EXPECT_TRUE(fs::exists(dir_ / "results" / "notes.txt"));
+}
+
+TEST_F(PlanCommandTest, ProgressIsTwoLinesWhenStderrIsNotATerminal) {
+  const fs::path scenario = TinyRobotScenario();
+  const fs::path cache = dir_ / "cache";
+  const std::string plan = "plan --scenario " + scenario.string() + " --oracle-cache " + cache.string();
+  const CairnStreams built = RunCairnStreams(plan);
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  // The bar used to redraw itself a hundred times (7.7 KB of carriage returns for the humanoid's oracle).
+  EXPECT_EQ(built.err.find('\r'), std::string::npos) << built.err;
+  EXPECT_THAT(built.err, HasSubstr("Building transition oracle"));
+  EXPECT_THAT(built.err, HasSubstr("building the transition oracle: started, 288 to do\n"));
+  EXPECT_THAT(built.err, HasSubstr("building the transition oracle: done, 288 of 288\n"));
+  EXPECT_EQ(built.err_lines(), 3) << built.err;
+  const CairnStreams loaded = RunCairnStreams(plan);
+  ASSERT_EQ(loaded.exit_code, 0) << loaded.err;
+  EXPECT_THAT(loaded.err, HasSubstr("Loaded transition oracle"));
+  EXPECT_EQ(loaded.err_lines(), 1) << loaded.err;
+}
+
+TEST_F(PlanCommandTest, AnUnusableOracleCacheWarnsAndPlansWithTheOracleInMemory) {
+  const fs::path scenario = TinyRobotScenario();
+  std::ofstream(dir_ / "a_file") << "x";
+  const std::string cache = (dir_ / "a_file" / "cache").string();
+  const CairnStreams run =
+      RunCairnStreams("plan --scenario " + scenario.string() + " --oracle-cache " + cache + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("cairn plan: warning: the oracle cache folder '" + cache + "' cannot be used"));
+  EXPECT_THAT(run.err, HasSubstr("building the transition oracle in memory"));
+  EXPECT_THAT(run.out, HasSubstr("\"scenario\": \"tiny\""));
+}
+
+TEST_F(PlanCommandTest, JsonWithoutAPlanHasNullsNotPlaceholders) {
+  const fs::path scenario = TinyRobotScenario();
+  const CairnStreams run = RunCairnStreams("plan --scenario " + scenario.string() + " --oracle-cache " +
+                                           (dir_ / "cache").string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("\"found\": false"));
+  // "first_plan_ms" was -1000 (the -1 s placeholder), cost and energy 0.
+  for (const char* key : {"\"first_plan_ms\": null", "\"cost\": null", "\"energy_J\": null", "\"epsilon\": null",
+                          "\"max_rcof\": null"}) {
+    EXPECT_THAT(run.out, HasSubstr(key));
+  }
+  for (const char* bad : {": -1000", ": nan", ": -nan", ": inf", ": -inf"}) EXPECT_THAT(run.out, Not(HasSubstr(bad)));
 }
 
 }  // namespace

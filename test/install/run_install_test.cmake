@@ -1,4 +1,5 @@
-# cmake -P script: install Cairn, build an outside project against it, run it.
+# cmake -P script: install Cairn into a scratch prefix, build an outside project against it (one program per
+# component, test/install/consumer/), run every program, and run the installed `cairn` command.
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(prefix "${WORK_DIR}/prefix")
 
@@ -13,12 +14,68 @@ run_step(${CMAKE_COMMAND} --install "${CAIRN_BUILD_DIR}" --prefix "${prefix}")
 if(NOT EXISTS "${prefix}/include/cairn/systems/framework/diagram_builder.h")
   message(FATAL_ERROR "Headers were not installed under include/cairn/.")
 endif()
-run_step(${CMAKE_COMMAND} -S "${CONSUMER_SOURCE_DIR}" -B "${WORK_DIR}/build" -G "${GENERATOR}"
-         -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
-run_step(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
-execute_process(COMMAND "${WORK_DIR}/build/consumer" RESULT_VARIABLE result OUTPUT_VARIABLE output
-                ERROR_VARIABLE output)
-message("${output}")
-if(NOT result EQUAL 0)
-  message(FATAL_ERROR "The consumer program failed (${result}).")
+file(GLOB_RECURSE installed LIST_DIRECTORIES true "${prefix}/include/cairn/*")
+set(internal_dirs ${installed})
+list(FILTER internal_dirs INCLUDE REGEX "/internal(/|$)")
+if(internal_dirs)
+  message(FATAL_ERROR "internal/ folders were installed (they are private to the libraries): ${internal_dirs}")
 endif()
+
+# The programs run from the prefix alone: no LD_LIBRARY_PATH, and not from the build tree (an RPATH pointing back
+# into it would hide a broken install).
+set(ENV{LD_LIBRARY_PATH} "")
+run_step(${CMAKE_COMMAND} -S "${CONSUMER_SOURCE_DIR}" -B "${WORK_DIR}/build" -G "${GENERATOR}"
+         -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release -DCAIRN_SOURCE_DIR=${CAIRN_SOURCE_DIR})
+run_step(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
+file(READ "${WORK_DIR}/build/programs.txt" programs)
+
+find_program(LDD ldd)
+# Fails unless every Cairn library `binary` loads comes from the prefix.
+function(check_cairn_libraries_from_prefix binary)
+  if(NOT LDD)
+    return()
+  endif()
+  execute_process(COMMAND ${LDD} "${binary}" OUTPUT_VARIABLE libraries RESULT_VARIABLE result)
+  string(REGEX MATCHALL "[^ \t\n]+ => not found" missing "${libraries}")
+  if(missing)
+    message(FATAL_ERROR "${binary} cannot start from the install: ${missing}")
+  endif()
+  string(REGEX MATCHALL "libcairn_[^ \t\n]+ => [^ \t\n]+" loaded "${libraries}")
+  if(NOT result EQUAL 0 OR NOT loaded)
+    message(FATAL_ERROR "ldd found no Cairn library in ${binary}:\n${libraries}")
+  endif()
+  foreach(line IN LISTS loaded)
+    string(REGEX REPLACE ".* => " "" path "${line}")
+    file(REAL_PATH "${path}" path)
+    file(REAL_PATH "${prefix}" real_prefix)
+    string(FIND "${path}" "${real_prefix}/" at)
+    if(NOT at EQUAL 0)
+      message(FATAL_ERROR "${binary} loads ${path}, outside the install prefix ${prefix}")
+    endif()
+  endforeach()
+endfunction()
+
+set(passed "")
+foreach(program IN LISTS programs)
+  set(binary "${WORK_DIR}/build/${program}")
+  check_cairn_libraries_from_prefix("${binary}")
+  execute_process(COMMAND "${binary}" RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  message("${output}")
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "The consumer program ${program} failed (${result}).")
+  endif()
+  string(REPLACE "consumer_" "" component "${program}")
+  list(APPEND passed ${component})
+endforeach()
+
+# The installed command finds Cairn's shared libraries through its RPATH ($ORIGIN/../lib).
+set(cairn "${prefix}/bin/cairn")
+check_cairn_libraries_from_prefix("${cairn}")
+execute_process(COMMAND "${cairn}" --version RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "The installed cairn command failed (${result}):\n${output}")
+endif()
+
+list(LENGTH passed count)
+list(JOIN passed " " passed)
+message("install test: ${count} components built and ran from the install: ${passed}; installed cairn ran")

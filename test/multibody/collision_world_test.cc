@@ -1,19 +1,24 @@
 #include <cairn/multibody/collision_world.h>
 
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
 #include <random>
+#include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cairn/multibody/configuration.h>
 #include <cairn/multibody/kinematics.h>
+#include <cairn/multibody/model_builder.h>
 
+#include "expect_throws.h"
 #include "test_models.h"
 
 namespace cairn::multibody {
 namespace {
-
-using test::ExpectThrowWithMessage;
 
 class CollisionWorldTest : public ::testing::Test {
  protected:
@@ -71,12 +76,12 @@ TEST_F(CollisionWorldTest, FiltersAdjacentAndExcludedPairs) {
   for (const CollisionPair& pair : world_.PairsWithin(0.1)) {
     EXPECT_FALSE(pair.geometry_a == sole && pair.geometry_b == ground_);
   }
-  ExpectThrowWithMessage<std::invalid_argument>([&] { world_.ExcludeBodyPair("pelvis", "l_thig"); },
-                                                {"unknown body 'l_thig'", "'l_thigh'"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { world_.GetGeometryIndex("grund"); },
-                                                {"unknown geometry 'grund'", "'ground'"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { world_.AddSphere("ground", 1.0, Eigen::Vector3d::Zero()); },
-                                                {"'ground'", "unique"});
+  CAIRN_EXPECT_THROWS_WITH(world_.ExcludeBodyPair("pelvis", "l_thig"), std::invalid_argument, "unknown body 'l_thig'",
+                           "'l_thigh'");
+  CAIRN_EXPECT_THROWS_WITH(world_.GetGeometryIndex("grund"), std::invalid_argument, "unknown geometry 'grund'",
+                           "'ground'");
+  CAIRN_EXPECT_THROWS_WITH(world_.AddSphere("ground", 1.0, Eigen::Vector3d::Zero()), std::invalid_argument, "'ground'",
+                           "unique");
 }
 
 TEST_F(CollisionWorldTest, PointsAndSpheresUseClosedForms) {
@@ -159,8 +164,8 @@ TEST_F(CollisionWorldTest, HeightFieldColumnsUnderTheFeet) {
   EXPECT_EQ(bumpy.geometry_name(hits[1].geometry_a), "l_ankle_box");
   EXPECT_NEAR(hits[1].result.distance, 0.03 - 0.05, 1e-12);
   heights(0, 0) = -1.0;
-  ExpectThrowWithMessage<std::invalid_argument>([&] { bumpy.AddHeightField("bad", heights, 0.02, origin, -0.1); },
-                                                {"'bad'", "below the bottom", "NaN"});
+  CAIRN_EXPECT_THROWS_WITH(bumpy.AddHeightField("bad", heights, 0.02, origin, -0.1), std::invalid_argument, "'bad'",
+                           "below the bottom", "NaN");
 }
 
 TEST(CollisionWorldMeshTest, LoadsStlMeshesOfDrcHubo) {
@@ -176,8 +181,57 @@ TEST(CollisionWorldMeshTest, LoadsStlMeshesOfDrcHubo) {
   // The torso mesh lies within a metre of the origin.
   EXPECT_GT(d, 3.5);
   EXPECT_LT(d, 5.0);
-  ExpectThrowWithMessage<std::invalid_argument>([&] { world.AddPoints("empty", Eigen::Matrix3Xd(3, 0)); },
-                                                {"'empty'", "at least one"});
+  CAIRN_EXPECT_THROWS_WITH(world.AddPoints("empty", Eigen::Matrix3Xd(3, 0)), std::invalid_argument, "'empty'",
+                           "at least one");
+}
+
+TEST_F(CollisionWorldTest, NanMarginsAreRefused) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  CAIRN_EXPECT_THROWS_WITH(world_.PairsWithin(nan), std::invalid_argument, "PairsWithin", "margin is NaN");
+  CAIRN_EXPECT_THROWS_WITH(world_.ClosestPair(nan), std::invalid_argument, "ClosestPair", "max_distance is NaN");
+}
+
+// A one-link model whose collision shape is the mesh file `path` (not checked by the builder).
+Model MeshModel(const std::string& path) {
+  ModelBuilder builder("mesh");
+  Body body;
+  body.name = "b";
+  Joint joint;
+  joint.name = "j";
+  const int index = builder.AddBody(0, body, joint);
+  Geometry mesh;
+  mesh.name = "m";
+  mesh.type = GeometryType::kMesh;
+  mesh.mesh_path = path;
+  builder.AddCollisionGeometry(index, mesh);
+  return builder.Build();
+}
+
+TEST(CollisionWorldMeshTest, CorruptHugeAndMisplacedMeshesAreRefused) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cairn_collision_world_test";
+  std::filesystem::create_directories(dir);
+  const std::string ascii = (dir / "nan.stl").string();
+  std::ofstream(ascii) << "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex nan 1 0\n"
+                          "endloop\nendfacet\nendsolid t\n";
+  CAIRN_EXPECT_THROWS_WITH(CollisionWorld world(MeshModel(ascii)), std::invalid_argument, "nan.stl", "vertex 2",
+                           "three numbers");
+  // A binary STL with one triangle whose first vertex is infinite.
+  std::string binary(84 + 50, '\0');
+  binary[80] = 1;
+  const float inf = std::numeric_limits<float>::infinity();
+  std::memcpy(&binary[84 + 12], &inf, sizeof(inf));
+  const std::string binary_path = (dir / "inf.stl").string();
+  std::ofstream(binary_path, std::ios::binary) << binary;
+  CAIRN_EXPECT_THROWS_WITH(CollisionWorld world(MeshModel(binary_path)), std::invalid_argument, "inf.stl",
+                           "vertex 0 is not finite");
+  const std::string huge = (dir / "huge.stl").string();
+  { std::ofstream(huge) << "solid"; }
+  std::filesystem::resize_file(huge, kMaxMeshBytes + 1);  // Sparse: costs no disk.
+  CAIRN_EXPECT_THROWS_WITH(CollisionWorld world(MeshModel(huge)), std::invalid_argument, "huge.stl",
+                           "larger than " + std::to_string(kMaxMeshBytes) + " bytes", "kMaxMeshBytes");
+  CAIRN_EXPECT_THROWS_WITH(CollisionWorld world(MeshModel(dir.string())), std::invalid_argument,
+                           "is a directory, expected an STL file");
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

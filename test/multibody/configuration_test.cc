@@ -1,16 +1,16 @@
 #include <cairn/multibody/configuration.h>
 
+#include <limits>
 #include <random>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "expect_throws.h"
 #include "test_models.h"
 
 namespace cairn::multibody {
 namespace {
-
-using test::ExpectThrowWithMessage;
 
 class ConfigurationTest : public ::testing::Test {
  protected:
@@ -71,6 +71,17 @@ TEST_F(ConfigurationTest, LimitHelpers) {
   EXPECT_NEAR(ClampToPositionLimits(model_, q)[knee.idx_q], knee.upper_limit, 1e-12);
   q[knee.idx_q] = knee.lower_limit - 0.5;
   EXPECT_NEAR(PositionLimitViolation(model_, q)[knee.idx_q], -0.5, 1e-12);
+  // A NaN tolerance would compare false everywhere and call every configuration out of limits.
+  CAIRN_EXPECT_THROWS_WITH(IsWithinPositionLimits(model_, q, std::numeric_limits<double>::quiet_NaN()),
+                           std::invalid_argument, "tolerance nan", ">= 0");
+  CAIRN_EXPECT_THROWS_WITH(IsWithinPositionLimits(model_, q, -0.1), std::invalid_argument, "tolerance -0.1");
+}
+
+TEST_F(ConfigurationTest, RandomConfigurationRefusesANonFiniteRange) {
+  std::mt19937 rng(7);
+  CAIRN_EXPECT_THROWS_WITH(RandomConfiguration(model_, rng, std::numeric_limits<double>::infinity()),
+                           std::invalid_argument, "unlimited_range inf", "finite and >= 0");
+  CAIRN_EXPECT_THROWS_WITH(RandomConfiguration(model_, rng, -1.0), std::invalid_argument, "unlimited_range -1");
 }
 
 TEST_F(ConfigurationTest, NormalizeAndErrors) {
@@ -80,13 +91,11 @@ TEST_F(ConfigurationTest, NormalizeAndErrors) {
   NormalizeConfiguration(model_, q);
   EXPECT_DOUBLE_EQ(q[root.idx_q + 3], 1.0);
   q.segment<4>(root.idx_q + 3).setZero();
-  ExpectThrowWithMessage<std::invalid_argument>([&] { NormalizeConfiguration(model_, q); },
-                                                {"root_joint", "(1, 0, 0, 0)"});
-  ExpectThrowWithMessage<std::invalid_argument>(
-      [&] { Integrate(model_, Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(model_.nv())); },
-      {"q has size 3", "nq = 34"});
-  ExpectThrowWithMessage<std::invalid_argument>(
-      [&] { Integrate(model_, NeutralConfiguration(model_), Eigen::VectorXd::Zero(2)); }, {"v has size 2", "nv = 33"});
+  CAIRN_EXPECT_THROWS_WITH(NormalizeConfiguration(model_, q), std::invalid_argument, "root_joint", "(1, 0, 0, 0)");
+  CAIRN_EXPECT_THROWS_WITH(Integrate(model_, Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(model_.nv())),
+                           std::invalid_argument, "q has size 3", "nq = 34");
+  CAIRN_EXPECT_THROWS_WITH(Integrate(model_, NeutralConfiguration(model_), Eigen::VectorXd::Zero(2)),
+                           std::invalid_argument, "v has size 2", "nv = 33");
 }
 
 }  // namespace

@@ -12,12 +12,11 @@
 #include <cairn/multibody/kinematics.h>
 #include <cairn/multibody/model_builder.h>
 
+#include "expect_throws.h"
 #include "test_models.h"
 
 namespace cairn::multibody {
 namespace {
-
-using test::ExpectThrowWithMessage;
 
 Eigen::VectorXd RandomVector(int n, std::mt19937& rng) {
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -180,11 +179,10 @@ TEST(DynamicsErrorsTest, SizesAndMasslessModelsAreReported) {
   const Model model = test::LoadRobot(test::AtlasUrdf(), false);
   Data data(model);
   const Eigen::VectorXd q = Eigen::VectorXd::Zero(model.nq());
-  ExpectThrowWithMessage<std::invalid_argument>(
-      [&] { InverseDynamics(model, data, q, Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(model.nv())); },
-      {"InverseDynamics", "v has size 3", "nv = 27"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { ForwardDynamics(model, data, q, q, Eigen::VectorXd::Zero(2)); },
-                                                {"ForwardDynamics", "size 2"});
+  CAIRN_EXPECT_THROWS_WITH(InverseDynamics(model, data, q, Eigen::VectorXd::Zero(3), Eigen::VectorXd::Zero(model.nv())),
+                           std::invalid_argument, "InverseDynamics", "v has size 3", "nv = 27");
+  CAIRN_EXPECT_THROWS_WITH(ForwardDynamics(model, data, q, q, Eigen::VectorXd::Zero(2)), std::invalid_argument,
+                           "ForwardDynamics", "size 2");
   // A joint carrying nothing makes M singular.
   ModelBuilder builder("massless");
   Body body;
@@ -196,10 +194,9 @@ TEST(DynamicsErrorsTest, SizesAndMasslessModelsAreReported) {
   const Model ghost = builder.Build();
   Data ghost_data(ghost);
   const Eigen::VectorXd one = Eigen::VectorXd::Zero(1);
-  ExpectThrowWithMessage<std::runtime_error>([&] { ForwardDynamics(ghost, ghost_data, one, one, one); },
-                                             {"massless", "not positive definite"});
-  ExpectThrowWithMessage<std::runtime_error>([&] { CenterOfMass(ghost, ghost_data, one); },
-                                             {"massless", "zero total mass"});
+  CAIRN_EXPECT_THROWS_WITH(ForwardDynamics(ghost, ghost_data, one, one, one), std::runtime_error, "massless",
+                           "not positive definite");
+  CAIRN_EXPECT_THROWS_WITH(CenterOfMass(ghost, ghost_data, one), std::runtime_error, "massless", "zero total mass");
 }
 
 }  // namespace

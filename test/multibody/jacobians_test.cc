@@ -9,12 +9,11 @@
 #include <cairn/multibody/configuration.h>
 #include <cairn/multibody/kinematics.h>
 
+#include "expect_throws.h"
 #include "test_models.h"
 
 namespace cairn::multibody {
 namespace {
-
-using test::ExpectThrowWithMessage;
 
 Eigen::Vector3d RotationVector(const Eigen::Matrix3d& R) {
   const Eigen::AngleAxisd aa(R);
@@ -128,14 +127,14 @@ TEST(JacobiansErrorsTest, WrongSizeAndFrameAreReported) {
   Data data(model);
   ForwardKinematics(model, data, Eigen::VectorXd::Zero(model.nq()));
   Eigen::MatrixXd J(6, 3);
-  ExpectThrowWithMessage<std::invalid_argument>([&] { FrameJacobian(model, data, 0, ReferenceFrame::kLocal, J); },
-                                                {"6 x 3", "6 x 27"});
+  CAIRN_EXPECT_THROWS_WITH(FrameJacobian(model, data, 0, ReferenceFrame::kLocal, J), std::invalid_argument, "6 x 3",
+                           "6 x 27");
   Eigen::MatrixXd ok(6, model.nv());
-  ExpectThrowWithMessage<std::invalid_argument>([&] { FrameJacobian(model, data, 999, ReferenceFrame::kLocal, ok); },
-                                                {"frame index 999", "GetFrameIndex"});
+  CAIRN_EXPECT_THROWS_WITH(FrameJacobian(model, data, 999, ReferenceFrame::kLocal, ok), std::invalid_argument,
+                           "frame index 999", "GetFrameIndex");
   const Model other = test::LoadRobot(test::AtlasUrdf(), true);
-  ExpectThrowWithMessage<std::invalid_argument>(
-      [&] { ForwardKinematics(other, data, Eigen::VectorXd::Zero(other.nq())); }, {"Data(model)"});
+  CAIRN_EXPECT_THROWS_WITH(ForwardKinematics(other, data, Eigen::VectorXd::Zero(other.nq())), std::invalid_argument,
+                           "Data(model)");
 }
 
 }  // namespace

@@ -5,12 +5,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "expect_throws.h"
 #include "test_models.h"
 
 namespace cairn::multibody {
 namespace {
-
-using test::ExpectThrowWithMessage;
 
 TEST(PackageMapTest, ResolvesExplicitEntriesSearchPathsAndPlainPaths) {
   PackageMap map;
@@ -27,12 +26,12 @@ TEST(PackageMapTest, ResolvesExplicitEntriesSearchPathsAndPlainPaths) {
 
 TEST(PackageMapTest, ErrorsNameTheBadValue) {
   PackageMap map;
-  ExpectThrowWithMessage<std::invalid_argument>([&] { map.AddSpec("nopath"); }, {"'nopath'", "name=path"});
-  ExpectThrowWithMessage<std::invalid_argument>([&] { map.Add("p", "/no/such/folder"); },
-                                                {"package 'p'", "/no/such/folder", "does not exist"});
+  CAIRN_EXPECT_THROWS_WITH(map.AddSpec("nopath"), std::invalid_argument, "'nopath'", "name=path");
+  CAIRN_EXPECT_THROWS_WITH(map.Add("p", "/no/such/folder"), std::invalid_argument, "package 'p'", "/no/such/folder",
+                           "does not exist");
   map.AddSearchPath(test::DartDataDir() + "/urdf");
-  ExpectThrowWithMessage<std::runtime_error>([&] { map.ResolvePackage("drchub"); },
-                                             {"package 'drchub'", "--package drchub=", "'drchubo'"});
+  CAIRN_EXPECT_THROWS_WITH(map.ResolvePackage("drchub"), std::runtime_error, "package 'drchub'",
+                           "--package drchub=", "'drchubo'");
 }
 
 }  // namespace

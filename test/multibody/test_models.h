@@ -1,13 +1,9 @@
 #pragma once
 
-// Shared helpers for the multibody tests: the robot files and an exception-message matcher.
+// Shared helpers for the multibody tests: the robot files. (Error-message tests use CAIRN_EXPECT_THROWS_WITH from
+// test/support/expect_throws.h.)
 
-#include <functional>
 #include <string>
-#include <vector>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 
 #include <cairn/multibody/model.h>
 #include <cairn/multibody/urdf_parser.h>
@@ -36,21 +32,6 @@ inline Model LoadRobot(const std::string& path, bool floating_base) {
   options.floating_base = floating_base;
   if (path == DrcHuboUrdf()) options.packages.Add("drchubo", DrcHuboPackageDir());
   return ParseUrdfFile(path, options);
-}
-
-/// Runs `f`, expecting an exception of type E whose what() contains every string in `fragments`.
-template <typename E>
-void ExpectThrowWithMessage(const std::function<void()>& f, const std::vector<std::string>& fragments) {
-  try {
-    f();
-  } catch (const E& e) {
-    for (const std::string& fragment : fragments) EXPECT_THAT(e.what(), ::testing::HasSubstr(fragment));
-    return;
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "threw the wrong exception type: " << e.what();
-    return;
-  }
-  ADD_FAILURE() << "did not throw";
 }
 
 }  // namespace cairn::multibody::test

@@ -10,14 +10,13 @@
 #include "cairn/optimization/function_evaluator.h"
 #include "cairn/optimization/linear_constraint.h"
 #include "cairn/optimization/linear_equality_constraint.h"
-#include "throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
 using Eigen::Ref;
 using Eigen::VectorXd;
-using test::MessageOf;
 using ::testing::HasSubstr;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -64,27 +63,22 @@ TEST(ConstraintTest, EvaluatorConstraintForwardsEverything) {
 TEST(ConstraintTest, RejectsBadBoundsAndInputs) {
   Eigen::SparseMatrix<double> A(1, 2);
   A.insert(0, 0) = 1.0;
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { LinearConstraint(A, Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)); }),
-              HasSubstr("Constraint 'LinearConstraint': lower bound has size 2 and upper bound 2; both need one "
-                        "entry per output (1)"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] {
-                LinearConstraint(A, Eigen::Matrix<double, 1, 1>(std::nan("")), Eigen::Matrix<double, 1, 1>(1));
-              }),
-              HasSubstr("bounds must not be NaN and need lower <= upper"));
+  CAIRN_EXPECT_THROWS_WITH(LinearConstraint(A, Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)), std::invalid_argument,
+                           "Constraint 'LinearConstraint': lower bound has size 2 and upper bound 2; both need one "
+                           "entry per output (1)");
+  CAIRN_EXPECT_THROWS_WITH(
+      ([&] { LinearConstraint(A, Eigen::Matrix<double, 1, 1>(std::nan("")), Eigen::Matrix<double, 1, 1>(1)); })(),
+      std::invalid_argument, "bounds must not be NaN and need lower <= upper");
   A.coeffRef(0, 1) = kInf;
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] {
-                LinearConstraint(A, Eigen::Matrix<double, 1, 1>(0), Eigen::Matrix<double, 1, 1>(1));
-              }),
-              HasSubstr("the matrix A has a non-finite entry"));
+  CAIRN_EXPECT_THROWS_WITH(
+      ([&] { LinearConstraint(A, Eigen::Matrix<double, 1, 1>(0), Eigen::Matrix<double, 1, 1>(1)); })(),
+      std::invalid_argument, "the matrix A has a non-finite entry");
   A.coeffRef(0, 1) = 1.0;
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { LinearEqualityConstraint(A, Eigen::Matrix<double, 1, 1>(kInf)); }),
-              HasSubstr("LinearEqualityConstraint: the right-hand side b has a non-finite entry"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>([] {
-                EvaluatorConstraint(nullptr, Eigen::Matrix<double, 1, 1>(0), Eigen::Matrix<double, 1, 1>(1));
-              }),
-              HasSubstr("EvaluatorConstraint: the evaluator is null"));
+  CAIRN_EXPECT_THROWS_WITH((LinearEqualityConstraint(A, Eigen::Matrix<double, 1, 1>(kInf))), std::invalid_argument,
+                           "LinearEqualityConstraint: the right-hand side b has a non-finite entry");
+  CAIRN_EXPECT_THROWS_WITH(
+      ([] { EvaluatorConstraint(nullptr, Eigen::Matrix<double, 1, 1>(0), Eigen::Matrix<double, 1, 1>(1)); })(),
+      std::invalid_argument, "EvaluatorConstraint: the evaluator is null");
 }
 
 }  // namespace

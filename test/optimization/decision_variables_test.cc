@@ -4,12 +4,11 @@
 #include <gtest/gtest.h>
 
 #include "cairn/optimization/mathematical_program.h"
-#include "throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
-using test::MessageOf;
 using ::testing::HasSubstr;
 
 TEST(DecisionVariablesTest, SegmentsAndConcatenationKeepOrderAndProgram) {
@@ -22,16 +21,16 @@ TEST(DecisionVariablesTest, SegmentsAndConcatenationKeepOrderAndProgram) {
   EXPECT_EQ(joined.program_id(), prog.id());
   EXPECT_EQ(joined[2], 2);
   EXPECT_TRUE(DecisionVariables().empty());
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] { (void)joined[4]; }),
-              HasSubstr("DecisionVariables '(v, q[2:4])': position 4 is out of range; valid positions are 0..3"));
+  CAIRN_EXPECT_THROWS_WITH((void)joined[4], std::invalid_argument,
+                           "DecisionVariables '(v, q[2:4])': position 4 is out of range; valid positions are 0..3");
 }
 
 TEST(DecisionVariablesTest, RejectsMixingPrograms) {
   MathematicalProgram a, b;
   const auto x = a.NewContinuousVariables(1, "x");
   const auto y = b.NewContinuousVariables(1, "y");
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] { DecisionVariables::Concatenate({x, y}); }),
-              HasSubstr("'y' belongs to a different MathematicalProgram than 'x'"));
+  CAIRN_EXPECT_THROWS_WITH((DecisionVariables::Concatenate({x, y})), std::invalid_argument,
+                           "'y' belongs to a different MathematicalProgram than 'x'");
 }
 
 }  // namespace

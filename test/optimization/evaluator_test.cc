@@ -7,14 +7,13 @@
 
 #include "cairn/optimization/autodiff_evaluator.h"
 #include "cairn/optimization/function_evaluator.h"
-#include "throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
 using Eigen::Ref;
 using Eigen::VectorXd;
-using test::MessageOf;
 using ::testing::HasSubstr;
 
 // y = (x0^2 x1, sin(x1) + x2): row 0 depends on x0, x1; row 1 on x1, x2.
@@ -89,32 +88,31 @@ TEST(EvaluatorTest, ValuesFollowThePatternOrder) {
 }
 
 TEST(EvaluatorTest, RejectsBadPatternsAndSizes) {
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [] { FunctionEvaluator("bad", 3, 2, {{2, 0}}, Value, {}); }),
-              HasSubstr("Evaluator 'bad': Jacobian pattern entry (2, 0) is outside the 2 x 3 matrix"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [] { FunctionEvaluator("twice", 3, 2, {{0, 1}, {0, 1}}, Value, {}); }),
-              HasSubstr("Evaluator 'twice': Jacobian pattern entry (0, 1) is declared twice"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>([] {
-                FunctionEvaluator("upper", 3, 2, kPattern, Value, {}, {{0, 1}},
-                                  [](const Ref<const VectorXd>&, const Ref<const VectorXd>&, Ref<VectorXd>) {});
-              }),
-              HasSubstr("Hessian pattern entry (0, 1) is above the diagonal; declare the lower triangle only"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>([] { FunctionEvaluator("empty", 1, 1, nullptr); }),
-              HasSubstr("FunctionEvaluator 'empty': the value function is empty"));
+  CAIRN_EXPECT_THROWS_WITH((FunctionEvaluator("bad", 3, 2, {{2, 0}}, Value, {})), std::invalid_argument,
+                           "Evaluator 'bad': Jacobian pattern entry (2, 0) is outside the 2 x 3 matrix");
+  CAIRN_EXPECT_THROWS_WITH((FunctionEvaluator("twice", 3, 2, {{0, 1}, {0, 1}}, Value, {})), std::invalid_argument,
+                           "Evaluator 'twice': Jacobian pattern entry (0, 1) is declared twice");
+  CAIRN_EXPECT_THROWS_WITH(
+      ([] {
+        FunctionEvaluator("upper", 3, 2, kPattern, Value, {}, {{0, 1}},
+                          [](const Ref<const VectorXd>&, const Ref<const VectorXd>&, Ref<VectorXd>) {});
+      })(),
+      std::invalid_argument, "Hessian pattern entry (0, 1) is above the diagonal; declare the lower triangle only");
+  CAIRN_EXPECT_THROWS_WITH(FunctionEvaluator("empty", 1, 1, nullptr), std::invalid_argument,
+                           "FunctionEvaluator 'empty': the value function is empty");
   const FunctionEvaluator f("sized", 3, 2, Value);
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] { f.Eval(Eigen::Vector2d(1, 2)); }),
-              HasSubstr("Evaluator 'sized'.Eval: x has size 2 but the evaluator takes 3 inputs"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] {
-                VectorXd y(2), values(3);
-                f.EvalWithJacobian(Eigen::Vector3d::Zero(), y, values);
-              }),
-              HasSubstr("jacobian_values 3; expected 2 and 6 (one per pattern entry)"));
-  EXPECT_THAT(MessageOf<std::logic_error>([&] {
-                VectorXd h(0);
-                f.EvalHessian(Eigen::Vector3d::Zero(), Eigen::Vector2d::Ones(), h);
-              }),
-              HasSubstr("Evaluator 'sized' has no Hessian; check has_hessian()"));
+  CAIRN_EXPECT_THROWS_WITH(f.Eval(Eigen::Vector2d(1, 2)), std::invalid_argument,
+                           "Evaluator 'sized'.Eval: x has size 2 but the evaluator takes 3 inputs");
+  CAIRN_EXPECT_THROWS_WITH(([&] {
+                             VectorXd y(2), values(3);
+                             f.EvalWithJacobian(Eigen::Vector3d::Zero(), y, values);
+                           })(),
+                           std::invalid_argument, "jacobian_values 3; expected 2 and 6 (one per pattern entry)");
+  CAIRN_EXPECT_THROWS_WITH(([&] {
+                             VectorXd h(0);
+                             f.EvalHessian(Eigen::Vector3d::Zero(), Eigen::Vector2d::Ones(), h);
+                           })(),
+                           std::logic_error, "Evaluator 'sized' has no Hessian; check has_hessian()");
 }
 
 }  // namespace

@@ -5,12 +5,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
-using test::MessageOf;
 using ::testing::HasSubstr;
 
 TEST(LinearCostTest, ValueGradientAndEmptyHessian) {
@@ -22,9 +21,8 @@ TEST(LinearCostTest, ValueGradientAndEmptyHessian) {
 }
 
 TEST(LinearCostTest, RejectsNonFiniteCoefficients) {
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [] { LinearCost(Eigen::Vector2d(1, std::numeric_limits<double>::quiet_NaN()), 0.0); }),
-              HasSubstr("LinearCost: the coefficients a and the constant b must be finite"));
+  CAIRN_EXPECT_THROWS_WITH((LinearCost(Eigen::Vector2d(1, std::numeric_limits<double>::quiet_NaN()), 0.0)),
+                           std::invalid_argument, "LinearCost: the coefficients a and the constant b must be finite");
 }
 
 }  // namespace

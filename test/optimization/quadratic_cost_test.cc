@@ -3,12 +3,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
-using test::MessageOf;
 using ::testing::HasSubstr;
 
 TEST(QuadraticCostTest, ValueGradientAndHessianLowerTriangle) {
@@ -25,14 +24,13 @@ TEST(QuadraticCostTest, ValueGradientAndHessianLowerTriangle) {
 }
 
 TEST(QuadraticCostTest, RejectsBadShapes) {
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [] { QuadraticCost(Eigen::Matrix2d::Identity().sparseView(), Eigen::Vector3d::Zero(), 0.0); }),
-              HasSubstr("QuadraticCost: Q is 2 x 2 and b has size 3; Q must be square with as many rows as b"));
+  CAIRN_EXPECT_THROWS_WITH(QuadraticCost(Eigen::Matrix2d::Identity().sparseView(), Eigen::Vector3d::Zero(), 0.0),
+                           std::invalid_argument,
+                           "QuadraticCost: Q is 2 x 2 and b has size 3; Q must be square with as many rows as b");
   Eigen::Matrix2d asymmetric;
   asymmetric << 1, 2, 0, 1;
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { QuadraticCost(asymmetric.sparseView(), Eigen::Vector2d::Zero(), 0.0); }),
-              HasSubstr("pass (Q + Q')/2 for the same cost"));
+  CAIRN_EXPECT_THROWS_WITH(QuadraticCost(asymmetric.sparseView(), Eigen::Vector2d::Zero(), 0.0), std::invalid_argument,
+                           "pass (Q + Q')/2 for the same cost");
 }
 
 }  // namespace

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
@@ -13,14 +16,13 @@
 #include "cairn/optimization/function_evaluator.h"
 #include "cairn/optimization/solvers/ipopt_solver.h"
 #include "../test_problems.h"
-#include "../throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
 using Eigen::Ref;
 using Eigen::VectorXd;
-using test::MessageOf;
 using ::testing::HasSubstr;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -190,8 +192,8 @@ TEST(LeastSquaresSolverTest, RejectsProgramsItCannotSolve) {
                         "AddLeastSquaresCost, or use 'ipopt'"));
   MathematicalProgram prog;
   const auto x = prog.NewContinuousVariables(2, "x");
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] { LeastSquaresSolver().Solve(prog); }),
-              HasSubstr("the program has no least-squares costs"));
+  CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(prog), std::invalid_argument,
+                           "the program has no least-squares costs");
   prog.AddLeastSquaresCost(std::make_shared<FunctionEvaluator>(
                                "identity", 2, 2,
                                [](const Ref<const VectorXd>& v, Ref<VectorXd> r) { r = v; }),
@@ -207,14 +209,35 @@ TEST(LeastSquaresSolverTest, RejectsUnknownOptions) {
   const test::TestProblem p = test::MakeChainedRosenbrock(4);
   SolverOptions typo;
   typo.Set("least_squares", "max_iteration", 5);
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), typo); }),
-              HasSubstr("unknown option 'max_iteration' (did you mean 'max_iterations'?)"));
+  CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), typo), std::invalid_argument,
+                           "unknown option 'max_iteration' (did you mean 'max_iterations'?)");
   SolverOptions bad_algorithm;
   bad_algorithm.Set("least_squares", "algorithm", "dogleg");
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), bad_algorithm); }),
-              HasSubstr("option 'algorithm' = 'dogleg' is not valid; use 'levenberg_marquardt' or 'gauss_newton'"));
+  CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), bad_algorithm),
+                           std::invalid_argument,
+                           "option 'algorithm' = 'dogleg' is not valid; use 'levenberg_marquardt' or 'gauss_newton'");
+  // Values out of range were used as given before (a negative count ran no iteration; a zero outer count was
+  // silently raised to one).
+  const std::vector<std::pair<SolverOptions, std::string>> out_of_range = [] {
+    std::vector<std::pair<SolverOptions, std::string>> cases(6);
+    cases[0].first.Set("least_squares", "max_iterations", -1);
+    cases[0].second = "option 'max_iterations' = -1 must be >= 1";
+    cases[1].first.Set("least_squares", "max_outer_iterations", 0);
+    cases[1].second = "option 'max_outer_iterations' = 0 must be >= 1";
+    cases[2].first.Set("least_squares", "gradient_tolerance", -1e-8);
+    cases[2].second = "option 'gradient_tolerance' = -1e-08 must be finite and >= 0";
+    cases[3].first.Set("least_squares", "initial_damping", 0.0);
+    cases[3].second = "option 'initial_damping' = 0 must be finite and > 0";
+    cases[4].first.Set("least_squares", "step_tolerance", std::numeric_limits<double>::infinity());
+    cases[4].second = "option 'step_tolerance' = inf must be finite";
+    cases[5].first.Set("least_squares", "constraint_tol", -1);
+    cases[5].second = "option 'constraint_tol' = -1 must be finite and >= 0";
+    return cases;
+  }();
+  for (const auto& [options, message] : out_of_range) {
+    CAIRN_EXPECT_THROWS_WITH(LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), options),
+                             std::invalid_argument, message);
+  }
   SolverOptions limit;
   limit.Set("least_squares", "max_iterations", 2);
   const SolverResult limited = LeastSquaresSolver().Solve(*p.prog, p.prog->initial_guess(), limit);

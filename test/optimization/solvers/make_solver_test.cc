@@ -4,12 +4,11 @@
 #include <gtest/gtest.h>
 
 #include "../test_problems.h"
-#include "../throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
-using test::MessageOf;
 using ::testing::HasSubstr;
 
 TEST(MakeSolverTest, SwapsSolversByName) {
@@ -28,11 +27,10 @@ TEST(MakeSolverTest, SwapsSolversByName) {
 }
 
 TEST(MakeSolverTest, RejectsUnknownNames) {
-  const std::string message = MessageOf<std::invalid_argument>([] { MakeSolver("ipopt3"); });
-  EXPECT_THAT(message, HasSubstr("unknown solver 'ipopt3' (did you mean 'ipopt'?)"));
-  EXPECT_THAT(message, HasSubstr("valid names are 'ipopt', 'least_squares' and 'nlopt:<ALGORITHM>"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>([] { MakeSolver("nlopt:SLSQP+DIRCT"); }),
-              HasSubstr("unknown NLopt algorithm 'DIRCT'"));
+  CAIRN_EXPECT_THROWS_WITH(MakeSolver("ipopt3"), std::invalid_argument,
+                           "unknown solver 'ipopt3' (did you mean 'ipopt'?)",
+                           "valid names are 'ipopt', 'least_squares' and 'nlopt:<ALGORITHM>");
+  CAIRN_EXPECT_THROWS_WITH(MakeSolver("nlopt:SLSQP+DIRCT"), std::invalid_argument, "unknown NLopt algorithm 'DIRCT'");
 }
 
 }  // namespace

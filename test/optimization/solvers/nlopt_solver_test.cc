@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <gmock/gmock.h>
@@ -10,14 +12,13 @@
 
 #include "cairn/optimization/function_evaluator.h"
 #include "../test_problems.h"
-#include "../throws_message.h"
+#include "expect_throws.h"
 
 namespace cairn::optimization {
 namespace {
 
 using Eigen::Ref;
 using Eigen::VectorXd;
-using test::MessageOf;
 using ::testing::HasSubstr;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -161,8 +162,7 @@ TEST(NloptSolverTest, EvaluatorExceptionsReachTheCaller) {
                                                      throw std::runtime_error("terrain lookup outside the map");
                                                    }),
                x);
-  EXPECT_THAT(MessageOf<std::runtime_error>([&] { NloptSolver("SLSQP").Solve(prog); }),
-              HasSubstr("terrain lookup outside the map"));
+  CAIRN_EXPECT_THROWS_WITH(NloptSolver("SLSQP").Solve(prog), std::runtime_error, "terrain lookup outside the map");
 }
 
 TEST(NloptSolverTest, ConcurrentSolvesAreIndependent) {
@@ -183,14 +183,12 @@ TEST(NloptSolverTest, ConcurrentSolvesAreIndependent) {
 }
 
 TEST(NloptSolverTest, RejectsUnknownAndAmbiguousAlgorithms) {
-  const std::string unknown = MessageOf<std::invalid_argument>([] { NloptSolver("SLSQQP"); });
-  EXPECT_THAT(unknown, HasSubstr("unknown NLopt algorithm 'SLSQQP'"));
-  EXPECT_THAT(unknown, HasSubstr("did you mean 'LD_SLSQP'"));
-  EXPECT_THAT(unknown, HasSubstr("valid names are 'GN_DIRECT', 'GN_DIRECT_L'"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>([] { NloptSolver("MLSL"); }),
-              HasSubstr("algorithm 'MLSL' is ambiguous; write one of 'GN_MLSL', 'GD_MLSL', 'G_MLSL'"));
+  CAIRN_EXPECT_THROWS_WITH(NloptSolver("SLSQQP"), std::invalid_argument, "unknown NLopt algorithm 'SLSQQP'",
+                           "did you mean 'LD_SLSQP'", "valid names are 'GN_DIRECT', 'GN_DIRECT_L'");
+  CAIRN_EXPECT_THROWS_WITH(NloptSolver("MLSL"), std::invalid_argument,
+                           "algorithm 'MLSL' is ambiguous; write one of 'GN_MLSL', 'GD_MLSL', 'G_MLSL'");
   EXPECT_EQ(NloptSolver("AUGLAG").name(), "nlopt:AUGLAG");  // an exact NLopt name wins over the short form
-  EXPECT_THAT(MessageOf<std::invalid_argument>([] { NloptSolver(""); }), HasSubstr("no algorithm given"));
+  CAIRN_EXPECT_THROWS_WITH(NloptSolver(""), std::invalid_argument, "no algorithm given");
   EXPECT_EQ(NloptSolver("ld_mma").name(), "nlopt:LD_MMA");
 }
 
@@ -198,8 +196,8 @@ TEST(NloptSolverTest, RejectsProgramsAnAlgorithmCannotHandle) {
   const test::TestProblem hs6 = test::MakeHs006();
   EXPECT_THAT(NloptSolver("MMA").CheckSupport(*hs6.prog),
               HasSubstr("LD_MMA cannot handle equality constraints such as 'hs006_equality(x)'"));
-  EXPECT_THAT(MessageOf<std::invalid_argument>([&] { NloptSolver("LBFGS").Solve(*test::MakeHs035().prog); }),
-              HasSubstr("LD_LBFGS cannot handle nonlinear inequality constraints such as 'LinearConstraint(x)'"));
+  CAIRN_EXPECT_THROWS_WITH(NloptSolver("LBFGS").Solve(*test::MakeHs035().prog), std::invalid_argument,
+                           "LD_LBFGS cannot handle nonlinear inequality constraints such as 'LinearConstraint(x)'");
   const test::TestProblem rosenbrock = test::MakeRosenbrock2();
   EXPECT_THAT(NloptSolver("ORIG_DIRECT").CheckSupport(*rosenbrock.prog),
               HasSubstr("the global algorithm GN_ORIG_DIRECT needs finite bounds on every variable, but 'x(0)' has "
@@ -210,20 +208,46 @@ TEST(NloptSolverTest, RejectsUnknownOptions) {
   const test::TestProblem p = test::MakeHs035();
   SolverOptions typo;
   typo.Set("nlopt", "max_eval", 10);
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), typo); }),
-              HasSubstr("unknown option 'max_eval' (did you mean 'maxeval'?)"));
+  CAIRN_EXPECT_THROWS_WITH(NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), typo), std::invalid_argument,
+                           "unknown option 'max_eval' (did you mean 'maxeval'?)");
   SolverOptions wrong_stage;
   wrong_stage.Set("nlopt", "COBYLA.maxeval", 10);
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), wrong_stage); }),
-              HasSubstr("option 'COBYLA.maxeval' names stage 'COBYLA', which is not a stage of this solver; stages "
-                        "are 'LD_SLSQP'"));
+  CAIRN_EXPECT_THROWS_WITH(NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), wrong_stage),
+                           std::invalid_argument,
+                           "option 'COBYLA.maxeval' names stage 'COBYLA', which is not a stage of this solver; stages "
+                           "are 'LD_SLSQP'");
   SolverOptions wrong_type;
   wrong_type.Set("nlopt", "maxeval", 10.5);
-  EXPECT_THAT(MessageOf<std::invalid_argument>(
-                  [&] { NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), wrong_type); }),
-              HasSubstr("option 'maxeval' is an integer but was given 10.5"));
+  CAIRN_EXPECT_THROWS_WITH(NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), wrong_type),
+                           std::invalid_argument, "option 'maxeval' is an integer but was given 10.5");
+}
+
+TEST(NloptSolverTest, RejectsOptionsOutOfRange) {
+  const test::TestProblem p = test::MakeHs035();
+  // NLopt read each of these differently from what was asked: maxeval <= 0 and maxtime <= 0 as no limit, a
+  // negative tolerance as none, a negative seed wrapped round to a huge unsigned number.
+  const std::vector<std::tuple<std::string, SolverOptions::Value, std::string>> cases = {
+      {"maxeval", 0, "option 'maxeval' = 0 must be >= 1"},
+      {"maxeval", -5, "option 'maxeval' = -5 must be >= 1"},
+      {"seed", -1, "option 'seed' = -1 must be >= 0"},
+      {"population", -2, "option 'population' = -2 must be >= 0"},
+      {"maxtime", -1.0, "option 'maxtime' = -1 must be > 0 seconds"},
+      {"maxtime", 0, "option 'maxtime' = 0 must be > 0 seconds"},
+      {"xtol_rel", -1e-6, "option 'xtol_rel' = -1e-06 must be finite and >= 0"},
+      {"ftol_abs", std::numeric_limits<double>::infinity(), "option 'ftol_abs' = inf must be finite"},
+      {"constraint_tol", -1e-8, "option 'constraint_tol' = -1e-08 must be finite and >= 0."},
+      {"LD_SLSQP.xtol_abs", -1.0, "option 'xtol_abs' = -1"},
+  };
+  for (const auto& [name, value, message] : cases) {
+    SolverOptions options;
+    if (const int* i = std::get_if<int>(&value)) {
+      options.Set("nlopt", name, *i);
+    } else {
+      options.Set("nlopt", name, std::get<double>(value));
+    }
+    CAIRN_EXPECT_THROWS_WITH(NloptSolver("SLSQP").Solve(*p.prog, p.prog->initial_guess(), options),
+                             std::invalid_argument, message);
+  }
 }
 
 TEST(NloptSolverTest, TwoSidedRowsAreRegisteredTwice) {

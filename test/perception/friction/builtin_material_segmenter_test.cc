@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "cairn/perception/friction/material_scene.h"
-#include "cairn/perception/friction/material_segmentation_score.h"
-#include "cairn/perception/friction/material_texture.h"
+#include "cairn/perception/evaluation/material_segmentation_score.h"
+#include "cairn/perception/synthetic/material_scene.h"
+#include "cairn/perception/synthetic/material_texture.h"
 #include "expect_throws.h"
 
 namespace cairn::perception {
@@ -195,19 +195,19 @@ TEST(BuiltinMaterialSegmenterTrainTest, BadTrainingInputsAreNamed) {
 void WriteText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 TEST(BuiltinMaterialSegmenterLoadTest, BadFilesGiveClearErrors) {
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load("/nonexistent/model.yaml"), std::runtime_error,
-                           "cannot open '/nonexistent/model.yaml'", "cairn friction-train --out");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load("/nonexistent/model.yaml"), std::invalid_argument,
+                           "Cannot read '/nonexistent/model.yaml'", "cairn friction-train --out");
   const std::string path = TempPath("bad.yaml");
   WriteText(path, "format: [unclosed\n");
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "is not valid YAML", "line");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "Malformed YAML in", "line");
   WriteText(path, "format: something_else\nversion: 1\n");
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error,
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument,
                            "not a built-in material segmenter model");
   WriteText(path, "format: cairn_builtin_material_segmenter\nversion: 9\n");
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "has version 9",
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "line 2", "has version 9",
                            "reads version 1");
   WriteText(path, "format: cairn_builtin_material_segmenter\nversion: 1\nlabels: [a, b]\nwindow: 15\n");
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "has no key 'stride'");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "missing key 'stride'");
 
   // A real model, truncated: its weight matrices lose values.
   const TrainingSet set = Renders(300, 2);
@@ -223,16 +223,17 @@ TEST(BuiltinMaterialSegmenterLoadTest, BadFilesGiveClearErrors) {
   std::string broken = text;
   broken.replace(data, text.find(']', data) - data, "1.5");  // w2 keeps one value of its 56.
   WriteText(path, broken);
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "malformed 'w2'",
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "malformed 'w2'",
                            "got rows 14, cols 4 and 1 values");
   std::string wrong_type = text;
   wrong_type.replace(wrong_type.find("temperature: "), 13, "temperature: warm #");
   WriteText(path, wrong_type);
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "wrong type", "line");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument,
+                           "'temperature' must be a number, got 'warm'", "line");
   std::string negative = text;
   negative.replace(negative.find("temperature: "), 13, "temperature: -");
   WriteText(path, negative);
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "temperature -",
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "temperature -",
                            "must be positive");
   // Sizes a file states are bounded before anything is allocated from them.
   std::string hidden = text;
@@ -240,13 +241,13 @@ TEST(BuiltinMaterialSegmenterLoadTest, BadFilesGiveClearErrors) {
   const auto cols = hidden.find("cols: ", b1) + 6;
   hidden.replace(cols, hidden.find_first_of(",}\n", cols) - cols, "100000000");
   WriteText(path, hidden);
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "100000000 hidden units",
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "100000000 hidden units",
                            "[1, 4096]");
   std::string window = text;
   window.replace(window.find("window: "), 8, "window: 4001 #");
   WriteText(path, window);
-  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::runtime_error, "inconsistent",
-                           "[3, 1023]", "got 4001");
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "inconsistent",
+                           "[3, 1023]", "got 4001", "Re-create it");
   std::remove(path.c_str());
 }
 

@@ -4,12 +4,12 @@
 
 #include <gtest/gtest.h>
 
-#include "cairn/perception/occupancy/bars_scenario.h"
 #include "cairn/perception/stereo/compute_confidence.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
 #include "cairn/perception/stereo/stereo_matcher.h"
-#include "cairn/perception/stereo/synthetic_stereo_source.h"
+#include "cairn/perception/synthetic/bars_scenario.h"
+#include "cairn/perception/synthetic/synthetic_stereo_source.h"
 #include "cairn/systems/analysis/simulator.h"
 #include "cairn/systems/framework/diagram_builder.h"
 #include "expect_throws.h"

@@ -1,4 +1,4 @@
-#include "cairn/perception/internal/ray_integration.h"
+#include "cairn/perception/occupancy/internal/ray_integration.h"
 
 #include <cmath>
 #include <random>

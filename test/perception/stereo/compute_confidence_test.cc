@@ -4,8 +4,8 @@
 #include <limits>
 #include <numeric>
 
-#include "cairn/perception/internal/fast_exp.h"
-#include "cairn/perception/internal/fast_log.h"
+#include "cairn/perception/occupancy/internal/fast_log.h"
+#include "cairn/perception/stereo/internal/fast_exp.h"
 #include "expect_throws.h"
 
 namespace cairn::perception {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cairn/perception/stereo/synthetic_stereo_renderer.h"
+#include "cairn/perception/synthetic/synthetic_stereo_renderer.h"
 #include "expect_throws.h"
 
 namespace cairn::perception {

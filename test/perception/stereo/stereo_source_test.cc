@@ -65,30 +65,33 @@ TEST_F(StereoSourceTest, PlaysTheSequenceBackOneFramePerPeriod) {
 }
 
 TEST_F(StereoSourceTest, ReportsBadFilesClearly) {
-  CAIRN_EXPECT_THROWS_WITH(StereoSource((folder_ / "none.yaml").string(), 0.1), std::runtime_error, "none.yaml");
-  CAIRN_EXPECT_THROWS_WITH(StereoSource(Write("frames: []\n"), 0.1), std::runtime_error, "no 'calibration' key");
-  CAIRN_EXPECT_THROWS_WITH(StereoSource(Write(std::string(kCalibration) + "frames: []\n"), 0.1), std::runtime_error,
+  CAIRN_EXPECT_THROWS_WITH(StereoSource((folder_ / "none.yaml").string(), 0.1), std::invalid_argument, "none.yaml");
+  CAIRN_EXPECT_THROWS_WITH(StereoSource(Write("frames: []\n"), 0.1), std::invalid_argument, "line 1",
+                           "missing key 'calibration' in the stereo source");
+  CAIRN_EXPECT_THROWS_WITH(StereoSource(Write(std::string(kCalibration) + "frames: []\n"), 0.1), std::invalid_argument,
                            "non-empty list");
   CAIRN_EXPECT_THROWS_WITH(
       StereoSource(Write(std::string(kCalibration) +
                          "frames:\n  - {left: missing.png, right: r0.png, translation: [0, 0, 0], "
                          "rotation_wxyz: [1, 0, 0, 0]}\n"),
                    0.1),
-      std::runtime_error, "missing.png", "cannot be read");
+      std::invalid_argument, "line 3", "missing.png", "cannot be read");
   CAIRN_EXPECT_THROWS_WITH(
       StereoSource(Write(std::string(kCalibration) +
                          "frames:\n  - {left: l0.png, right: small.png, translation: [0, 0, 0], "
                          "rotation_wxyz: [1, 0, 0, 0]}\n"),
                    0.1),
-      std::runtime_error, "left 8x6 but right 4x3");
+      std::invalid_argument, "left 8x6 but right 4x3");
   CAIRN_EXPECT_THROWS_WITH(
       StereoSource(Write(std::string(kCalibration) + "frames:\n  - {left: l0.png, right: r0.png}\n"), 0.1),
-      std::runtime_error, "frame 0 has no 'translation' key");
+      std::invalid_argument, "line 3", "missing key 'translation' in frame 0");
   CAIRN_EXPECT_THROWS_WITH(
       StereoSource(Write("calibration: {fx: 400, fy: 410, cx: 3.5, cy: 2.5, baseline: -1}\nframes:\n"
                          "  - {left: l0.png, right: r0.png, translation: [0, 0, 0], rotation_wxyz: [1, 0, 0, 0]}\n"),
                    0.1),
-      std::runtime_error, "baseline");
+      std::invalid_argument, "baseline");
+  CAIRN_EXPECT_THROWS_WITH(StereoSource(Write(std::string(kCalibration) + "frame: []\n"), 0.1), std::invalid_argument,
+                           "line 2", "unknown key 'frame' in the stereo source", "Did you mean 'frames'?");
   CAIRN_EXPECT_THROWS_WITH(StereoSource(Write(kCalibration), -0.1), std::invalid_argument, "period");
 }
 
@@ -98,7 +101,7 @@ TEST_F(StereoSourceTest, RefusesNonFinitePosesAndImagesTooLargeToDecode) {
                          "frames:\n  - {left: l0.png, right: r0.png, translation: [0, .nan, 0], "
                          "rotation_wxyz: [1, 0, 0, 0]}\n"),
                    0.1),
-      std::runtime_error, "line 3", "frame 0 has a non-finite value in 'translation'");
+      std::invalid_argument, "line 3", "'translation' must be a finite number, got '.nan'");
   // A PNG whose header claims 30000 x 30000 pixels is refused before it is decoded.
   std::vector<uchar> bytes;
   ASSERT_TRUE(cv::imencode(".png", cv::Mat(1, 1, CV_8UC1, cv::Scalar(0)), bytes));
@@ -113,12 +116,12 @@ TEST_F(StereoSourceTest, RefusesNonFinitePosesAndImagesTooLargeToDecode) {
                          "frames:\n  - {left: huge.png, right: r0.png, translation: [0, 0, 0], "
                          "rotation_wxyz: [1, 0, 0, 0]}\n"),
                    0.1),
-      std::runtime_error, "huge.png", "30000 x 30000", "limit of 67108864 pixels");
+      std::invalid_argument, "line 3", "frame 0 names image", "huge.png", "30000 x 30000", "limit of 67108864 pixels");
   CAIRN_EXPECT_THROWS_WITH(
       StereoSource(Write("calibration: {fx: 400, fy: 410, cx: .inf, cy: 2.5, baseline: 0.1}\nframes:\n"
                          "  - {left: l0.png, right: r0.png, translation: [0, 0, 0], rotation_wxyz: [1, 0, 0, 0]}\n"),
                    0.1),
-      std::runtime_error, "cx = inf");
+      std::invalid_argument, "line 1", "'cx' must be a finite number, got '.inf'");
 }
 
 }  // namespace

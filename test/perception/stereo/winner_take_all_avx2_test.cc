@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cairn/perception/internal/winner_take_all_row.h"
 #include "cairn/perception/stereo/disparity_volume.h"
+#include "cairn/perception/stereo/internal/winner_take_all_row.h"
 #include "same_wta_result.h"
 
 namespace cairn::perception {

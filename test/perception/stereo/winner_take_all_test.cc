@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "cairn/perception/stereo/compute_cost_volume.h"
@@ -113,6 +114,16 @@ TEST(WinnerTakeAllTest, MatchesAPlainScanWithTiesAndInfiniteCosts) {
       }
     }
   }
+}
+
+// The thread count follows cairn::ResolveThreadCount (test/common/parallel_for_test.cc); -1 once meant "all cores".
+TEST(WinnerTakeAllTest, ANegativeThreadCountIsAnError) {
+  DisparityVolume costs(2, 4, 0, 1);
+  WtaOptions options;
+  options.num_threads = -1;
+  WtaResult result;
+  CAIRN_EXPECT_THROWS_WITH(ComputeWinnerTakeAll(costs, options, &result), std::invalid_argument,
+                           "num_threads -1 is negative");
 }
 
 }  // namespace

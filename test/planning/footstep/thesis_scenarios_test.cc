@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include <cairn/planning/footstep/footstep_scenario.h>
 #include <cairn/planning/footstep/plan_footsteps.h>
 #include <cairn/planning/footstep/stance_graph.h>
+#include <cairn/planning/scenarios/footstep_scenario.h>
 
 #include "../support/shared_oracle.h"
 

@@ -113,32 +113,35 @@ TEST(WalkingModelTest, LegTorquesObeyStatics) {
 }
 
 TEST(WalkingModelTest, ErrorsNameTheFileAndKey) {
-  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load("/nonexistent/walking.yaml"), std::runtime_error, "/nonexistent/walking.yaml");
-  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("reach:", "reech:")), std::runtime_error, "walking.yaml",
-                           "'reech'", "did you mean", "'reach'");
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load("/nonexistent/walking.yaml"), std::invalid_argument,
+                           "Cannot read '/nonexistent/walking.yaml'");
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("reach:", "reech:")), std::invalid_argument, "walking.yaml",
+                           "unknown key 'reech'", "Did you mean 'reach'?");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("t_ds: [0.09, 1.8]", "t_ds: [0.09, fast]")),
-                           std::runtime_error, "parameters.t_ds", "expected a number", "line");
+                           std::invalid_argument, "In '", "line", "'parameters.t_ds' must be a number, got 'fast'");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("t_sw: [0.9, 1.8]", "t_sw: [1.8, 0.9]")),
-                           std::runtime_error, "parameters.t_sw", "above max");
+                           std::invalid_argument, "parameters.t_sw", "above max");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("com_height: [0.61, 0.79]", "com_height: [0.50, 0.79]")),
-                           std::runtime_error, "parameters.com_height", "not reachable", "0.606");
+                           std::invalid_argument, "parameters.com_height", "not reachable", "0.606");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("  dy: [0.17, 0.30]", "  dy: [0.10, 0.30]")),
-                           std::runtime_error, "reach.dy", "sole width");
+                           std::invalid_argument, "reach.dy", "sole width");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("urdf: cairn_humanoid.urdf", "urdf: missing.urdf")),
-                           std::runtime_error, "key 'urdf'", "does not exist");
+                           std::invalid_argument, "key 'urdf'", "does not exist");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("resistance: 0.299", "resistance: -1")),
-                           std::runtime_error, "motors.hip_yaw.resistance", "outside its valid range");
-  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("l_knee,", "l_kne,")), std::runtime_error,
+                           std::invalid_argument, "motors.hip_yaw.resistance", "outside its valid range");
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("l_knee,", "l_kne,")), std::invalid_argument,
                            "left_leg_joints", "'l_kne'", "l_knee");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("swing_height: 0.05", "swing_height: [0.05")),
-                           std::runtime_error, "not valid YAML");
-  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("  crouch: 0.20", "")), std::runtime_error,
+                           std::invalid_argument, "Malformed YAML in");
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("  crouch: 0.20", "")), std::invalid_argument,
                            "body_box");
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("swing_height: 0.05", "swing_height: 0.05\nname: twice")),
+                           std::invalid_argument, "the key 'name' appears twice");
   // The name becomes a cache file's name: no folders, no line breaks.
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("name: cairn_humanoid", "name: ../../etc/robot")),
-                           std::runtime_error, "key 'name'", "letters, digits", "'../../etc/robot'");
+                           std::invalid_argument, "key 'name'", "letters, digits", "'../../etc/robot'");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("resistance: 0.299", "resistance: .nan")),
-                           std::runtime_error, "motors.hip_yaw.resistance", "finite");
+                           std::invalid_argument, "motors.hip_yaw.resistance", "finite");
 }
 
 }  // namespace

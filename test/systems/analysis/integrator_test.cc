@@ -1,4 +1,5 @@
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -84,6 +85,62 @@ TEST(IntegratorTest, StepsNeverOvershootTheTarget) {
   CAIRN_EXPECT_THROWS_WITH(rk4.Step(system, context.get(), 0.1), std::invalid_argument, "not after the current time");
   CAIRN_EXPECT_THROWS_WITH(rk4.set_maximum_step_size(0.0), std::invalid_argument, "finite and > 0");
   CAIRN_EXPECT_THROWS_WITH(RungeKutta45Integrator(0.1, 2.0), std::invalid_argument, "accuracy must be in (0, 1)");
+}
+
+// x' = 1e300 x: one explicit step of any useful size overflows.
+class Exploding final : public LeafSystem {
+ public:
+  Exploding() { DeclareContinuousState(Eigen::VectorXd::Ones(1)); }
+
+ private:
+  void DoCalcTimeDerivatives(const Context& context, Eigen::Ref<Eigen::VectorXd> derivatives) const override {
+    derivatives = 1e300 * context.get_continuous_state_vector();
+  }
+};
+
+TEST(IntegratorTest, AStepThatCannotAdvanceTimeIsRefused) {
+  Oscillator system;
+  auto context = system.CreateDefaultContext();
+  context->SetTime(1.0);
+  // 1 + 1e-20 == 1: the step would be repeated forever.
+  RungeKutta4Integrator rk4(1e-20);
+  CAIRN_EXPECT_THROWS_WITH(rk4.Step(system, context.get(), 2.0), std::invalid_argument, "'rk4'",
+                           "maximum step size 1e-20 s cannot advance time from t = 1", "2.22045e-16 s apart");
+  ExplicitEulerIntegrator euler(1e-17);
+  CAIRN_EXPECT_THROWS_WITH(euler.Step(system, context.get(), 2.0), std::invalid_argument, "'explicit_euler'",
+                           "1e-17 s");
+  // Near t = 0 the same step does advance (the Simulator's step limit is what bounds such a run).
+  context->SetTime(0.0);
+  EXPECT_EQ(rk4.Step(system, context.get(), 2.0), 1e-20);
+  CAIRN_EXPECT_THROWS_WITH(rk4.Step(system, context.get(), std::numeric_limits<double>::infinity()),
+                           std::invalid_argument, "t_max = inf", "not finite");
+}
+
+TEST(IntegratorTest, RungeKutta45RaisesATrialStepThatCannotAdvanceTime) {
+  Oscillator system;
+  auto context = system.CreateDefaultContext();
+  context->SetTime(1e6);
+  // The first trial step, a hundredth of the maximum, is below the spacing of doubles at 1e6 (1.2e-10).
+  RungeKutta45Integrator rk45(1e-9, 1e-6);
+  const double reached = rk45.Step(system, context.get(), 1e6 + 1.0);
+  EXPECT_GT(reached, 1e6);
+  EXPECT_LE(reached - 1e6, 1.1e-9);
+  CAIRN_EXPECT_THROWS_WITH(rk45.set_minimum_step_size(std::numeric_limits<double>::quiet_NaN()),
+                           std::invalid_argument, "minimum step size must be finite and > 0; got nan");
+}
+
+TEST(IntegratorTest, ADivergedStateIsReportedWithTheStep) {
+  Exploding system;
+  auto context = system.CreateDefaultContext();
+  ExplicitEulerIntegrator euler(0.5);
+  euler.Step(system, context.get(), 10.0);  // x = 5e299
+  CAIRN_EXPECT_THROWS_WITH(euler.Step(system, context.get(), 10.0), std::runtime_error, "'explicit_euler'",
+                           "became non-finite (element 0 = inf)", "from t = 0.5 to 1", "diverged");
+  // RK45 rejects overflowing trial stages rather than reporting them, until the step is below its minimum.
+  auto fresh = system.CreateDefaultContext();
+  RungeKutta45Integrator rk45(0.5);
+  CAIRN_EXPECT_THROWS_WITH(rk45.Step(system, fresh.get(), 10.0), std::runtime_error, "step size fell to",
+                           "below the minimum 1e-14");
 }
 
 }  // namespace

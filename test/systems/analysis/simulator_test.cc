@@ -1,11 +1,14 @@
 #include "cairn/systems/analysis/simulator.h"
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "cairn/systems/analysis/runge_kutta45_integrator.h"
+#include "cairn/systems/analysis/runge_kutta4_integrator.h"
 #include "cairn/systems/framework/diagram_builder.h"
 #include "cairn/systems/framework/leaf_system.h"
 #include "cairn/systems/primitives/constant_vector_source.h"
@@ -129,6 +132,69 @@ TEST(SimulatorTest, LogsEveryStepAndRejectsBadArguments) {
   CAIRN_EXPECT_THROWS_WITH(simulator.set_target_realtime_rate(-1.0), std::invalid_argument, ">= 0");
   CAIRN_EXPECT_THROWS_WITH(simulator.get_mutable_integrator().set_target_accuracy(1e-3), std::logic_error,
                            "'rk4' has no error control", "RungeKutta45Integrator");
+}
+
+// A constant rate integrated: continuous state, no events.
+std::unique_ptr<Diagram> Ramp() {
+  DiagramBuilder builder;
+  auto* source = builder.AddSystem<ConstantVectorSource>(Eigen::VectorXd::Ones(1));
+  auto* integrator = builder.AddNamedSystem<Integrator>("integrator", 1);
+  builder.Connect(*source, *integrator);
+  return builder.Build();
+}
+
+TEST(SimulatorTest, RunsNeedingMoreStepsThanTheLimitAreRefusedBeforeTheyStart) {
+  auto diagram = Ramp();
+  Simulator simulator(*diagram);
+  simulator.ResetIntegrator<RungeKutta4Integrator>(1e-20);
+  // This ran "forever" before (1e21 steps).
+  CAIRN_EXPECT_THROWS_WITH(simulator.AdvanceTo(10.0), std::invalid_argument, "AdvanceTo(10)",
+                           "takes at least 1e+21 steps", "integrator steps of at most 1e-20 s",
+                           "limit of 100000000", "Simulator::set_step_limit");
+  EXPECT_EQ(simulator.get_context().get_time(), 0.0);
+  simulator.ResetIntegrator<RungeKutta4Integrator>(1e-3);
+  CAIRN_EXPECT_THROWS_WITH(simulator.AdvanceTo(1e300), std::invalid_argument, "takes at least 1e+303 steps");
+  simulator.set_step_limit(999);
+  CAIRN_EXPECT_THROWS_WITH(simulator.AdvanceTo(1.0), std::invalid_argument, "limit of 999");
+  simulator.set_step_limit(1000);
+  EXPECT_TRUE(simulator.AdvanceTo(1.0).reached_boundary_time());
+  CAIRN_EXPECT_THROWS_WITH(simulator.set_step_limit(0), std::invalid_argument, "must be >= 1 step; got 0");
+  CAIRN_EXPECT_THROWS_WITH(simulator.AdvanceTo(std::nan("")), std::invalid_argument, "AdvanceTo(nan)", "finite");
+}
+
+TEST(SimulatorTest, EventPeriodsCountTowardsTheLimitAndMustBeResolvable) {
+  EventRecorder fast(1e-9, 0.0);
+  Simulator simulator(fast);
+  CAIRN_EXPECT_THROWS_WITH(simulator.AdvanceTo(1.0), std::invalid_argument, "takes at least 1e+09 steps",
+                           "a periodic event of '<unnamed>' every 1e-09 s");
+  EventRecorder slow(1e-3, 0.0);
+  Simulator late(slow);
+  late.get_mutable_context().SetTime(1e12);
+  // At 1e12 event times 1e-3 apart coincide (1e-12 relative): the event search would never move on.
+  CAIRN_EXPECT_THROWS_WITH(late.AdvanceTo(1e12 + 1.0), std::invalid_argument, "period 0.001 s",
+                           "below the time resolution");
+}
+
+TEST(SimulatorTest, ARunReachingTheStepLimitStopsWithAMessage) {
+  auto diagram = Ramp();
+  Simulator simulator(*diagram);
+  // The error-controlled integrator's steps cannot be known in advance; it starts at a hundredth of the maximum.
+  simulator.ResetIntegrator<RungeKutta45Integrator>(100.0);
+  simulator.set_step_limit(3);
+  CAIRN_EXPECT_THROWS_WITH(simulator.AdvanceTo(100.0), std::runtime_error, "AdvanceTo(100) took 3 steps",
+                           "reached only t = ");
+}
+
+TEST(SimulatorTest, VectorLogCapacityEndsARunThatLogsTooMuch) {
+  DiagramBuilder builder;
+  auto* source = builder.AddSystem<ConstantVectorSource>(Eigen::VectorXd::Ones(1));
+  auto* integrator = builder.AddNamedSystem<Integrator>("integrator", 1);
+  builder.Connect(*source, *integrator);
+  LogVectorOutput(integrator->get_output_port(), &builder, 0.0, 5);
+  auto diagram = builder.Build();
+  Simulator simulator(*diagram);
+  CAIRN_EXPECT_THROWS_WITH(simulator.AdvanceTo(1.0), std::runtime_error, "is full",
+                           "capacity of 5 samples", "log less often");
 }
 
 TEST(SimulatorTest, RealTimePacingKeepsResults) {

@@ -1,5 +1,6 @@
 #include "cairn/systems/framework/context.h"
 
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -55,6 +56,34 @@ TEST(ContextTest, StateAccessErrorsNameTheSystemAndTheFix) {
   CAIRN_EXPECT_THROWS_WITH(context->get_abstract_state<double>(0), std::logic_error, "int", "double");
   CAIRN_EXPECT_THROWS_WITH(context->num_calculations(System::time_ticket()), std::invalid_argument,
                            "not a cached computation");
+}
+
+TEST(ContextTest, NonFiniteTimesAndStatesAreRefused) {
+  test::KitchenSink system;
+  auto context = system.CreateDefaultContext();
+  CAIRN_EXPECT_THROWS_WITH(context->SetTime(std::nan("")), std::invalid_argument, "SetTime(nan)", "finite");
+  CAIRN_EXPECT_THROWS_WITH(context->SetTime(HUGE_VAL), std::invalid_argument, "SetTime(inf)");
+  CAIRN_EXPECT_THROWS_WITH(context->SetContinuousState(Eigen::Vector2d(1.0, std::nan(""))), std::invalid_argument,
+                           "SetContinuousState", "element 1 is nan", "finite");
+  CAIRN_EXPECT_THROWS_WITH(context->SetDiscreteState(0, Eigen::Vector2d(-HUGE_VAL, 0.0)), std::invalid_argument,
+                           "SetDiscreteState(0)", "element 0 is -inf");
+  EXPECT_EQ(context->get_continuous_state_vector(), system.CreateDefaultContext()->get_continuous_state_vector());
+}
+
+// Declares a continuous and a discrete state from the given initial values.
+class StateHolder final : public LeafSystem {
+ public:
+  StateHolder(const Eigen::VectorXd& continuous, const Eigen::VectorXd& discrete) {
+    DeclareContinuousState(continuous);
+    DeclareDiscreteState(discrete);
+  }
+};
+
+TEST(ContextTest, NonFiniteInitialStatesAreRefusedWhereDeclared) {
+  CAIRN_EXPECT_THROWS_WITH(StateHolder(Eigen::Vector2d(0.0, HUGE_VAL), Eigen::Vector2d::Zero()),
+                           std::invalid_argument, "initial continuous state has element 1 = inf");
+  CAIRN_EXPECT_THROWS_WITH(StateHolder(Eigen::Vector2d::Zero(), Eigen::Vector2d(std::nan(""), 0.0)),
+                           std::invalid_argument, "initial discrete state has element 0 = nan");
 }
 
 TEST(ContextTest, DiagramContextsPointToSubsystemContexts) {

@@ -1,5 +1,7 @@
 #include "cairn/systems/primitives/gain.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "expect_throws.h"
@@ -19,6 +21,13 @@ TEST(GainTest, ScalarAndPerElementGains) {
   EXPECT_EQ(per_element.get_output_port().Eval<Eigen::VectorXd>(*other), Eigen::Vector2d(-4.0, 2.0));
   EXPECT_TRUE(per_element.HasDirectFeedthrough(0, 0));
   CAIRN_EXPECT_THROWS_WITH(Gain(1.0, 0), std::invalid_argument, "size must be positive");
+}
+
+TEST(GainTest, NonFiniteAndEmptyGainsAreRefused) {
+  CAIRN_EXPECT_THROWS_WITH(Gain(std::nan(""), 2), std::invalid_argument, "gain element 0 is nan", "finite");
+  CAIRN_EXPECT_THROWS_WITH(Gain(Eigen::Vector2d(1.0, -HUGE_VAL)), std::invalid_argument, "gain element 1 is -inf");
+  CAIRN_EXPECT_THROWS_WITH(Gain(Eigen::VectorXd()), std::invalid_argument, "must not be empty");
+  CAIRN_EXPECT_THROWS_WITH(Gain(1.0, -3), std::invalid_argument, "size must be positive; got -3");
 }
 
 }  // namespace

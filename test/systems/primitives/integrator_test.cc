@@ -1,6 +1,10 @@
 #include "cairn/systems/primitives/integrator.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
+
+#include "expect_throws.h"
 
 namespace cairn::systems {
 namespace {
@@ -14,6 +18,11 @@ TEST(IntegratorPrimitiveTest, DerivativeIsTheInputAndOutputIsTheState) {
   integrator.CalcTimeDerivatives(*context, &derivatives);
   EXPECT_EQ(derivatives, Eigen::Vector2d(3.0, -3.0));
   EXPECT_EQ(integrator.get_output_port().Eval<Eigen::VectorXd>(*context), Eigen::Vector2d(1.0, 2.0));
+}
+
+TEST(IntegratorPrimitiveTest, NonFiniteInitialValuesAreRefused) {
+  CAIRN_EXPECT_THROWS_WITH(Integrator(Eigen::Vector2d(0.0, std::nan(""))), std::invalid_argument,
+                           "Integrator: initial value element 1 is nan", "finite");
 }
 
 }  // namespace

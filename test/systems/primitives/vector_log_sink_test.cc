@@ -1,5 +1,6 @@
 #include "cairn/systems/primitives/vector_log_sink.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -41,6 +42,26 @@ TEST(VectorLogSinkTest, RejectsBadSizesAndPeriods) {
   CAIRN_EXPECT_THROWS_WITH(VectorLogSink(1, -0.1), std::invalid_argument, "publish_period must be >= 0");
   VectorLog log(2);
   CAIRN_EXPECT_THROWS_WITH(log.AddData(0.0, Eigen::VectorXd::Zero(3)), std::invalid_argument, "size 3");
+  // NaN compared false with 0 and silently meant "every step" before.
+  CAIRN_EXPECT_THROWS_WITH(VectorLogSink(1, std::nan("")), std::invalid_argument, "publish_period", "got nan");
+  CAIRN_EXPECT_THROWS_WITH(VectorLogSink(1, HUGE_VAL), std::invalid_argument, "publish_period", "got inf");
+  CAIRN_EXPECT_THROWS_WITH(VectorLogSink(1, 0.1, 0), std::invalid_argument, "capacity must be >= 1 sample; got 0");
+  CAIRN_EXPECT_THROWS_WITH(VectorLog(-1), std::invalid_argument, "size must be >= 0; got -1");
+  CAIRN_EXPECT_THROWS_WITH(log.AddData(std::nan(""), Eigen::VectorXd::Zero(2)), std::invalid_argument,
+                           "sample time nan");
+}
+
+TEST(VectorLogSinkTest, ALogHoldsAtMostItsCapacity) {
+  EXPECT_EQ(VectorLog(3).capacity(), VectorLog::kDefaultCapacity);
+  VectorLog log(1, 2);
+  log.AddData(0.0, Eigen::VectorXd::Zero(1));
+  log.AddData(0.1, Eigen::VectorXd::Zero(1));
+  CAIRN_EXPECT_THROWS_WITH(log.AddData(0.2, Eigen::VectorXd::Zero(1)), std::runtime_error,
+                           "capacity of 2 samples", "t = 0.2", "publish period", "larger capacity");
+  EXPECT_EQ(log.num_samples(), 2);
+  VectorLogSink sink(1, 0.0, 1);
+  auto context = sink.CreateDefaultContext();
+  EXPECT_EQ(sink.GetLog(*context).capacity(), 1);
 }
 
 }  // namespace

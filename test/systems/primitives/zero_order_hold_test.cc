@@ -1,5 +1,6 @@
 #include "cairn/systems/primitives/zero_order_hold.h"
 
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include "cairn/systems/analysis/simulator.h"
 #include "cairn/systems/framework/diagram_builder.h"
 #include "cairn/systems/primitives/function_system.h"
+#include "expect_throws.h"
 
 namespace cairn::systems {
 namespace {
@@ -35,6 +37,13 @@ TEST(ZeroOrderHoldTest, HoldsAbstractValues) {
   Simulator simulator(hold, std::move(context));
   simulator.AdvanceTo(0.05);
   EXPECT_EQ(hold.get_output_port().Eval<std::string>(simulator.get_context()), "sampled");
+}
+
+TEST(ZeroOrderHoldTest, PeriodsMustBeFiniteAndPositive) {
+  CAIRN_EXPECT_THROWS_WITH(ZeroOrderHold(std::nan(""), 1), std::invalid_argument,
+                           "ZeroOrderHold: the sampling period must be finite and > 0; got nan");
+  CAIRN_EXPECT_THROWS_WITH(ZeroOrderHold(HUGE_VAL, 1), std::invalid_argument, "got inf");
+  CAIRN_EXPECT_THROWS_WITH(ZeroOrderHold(0.0, Value<std::string>("x")), std::invalid_argument, "got 0");
 }
 
 }  // namespace
