@@ -174,9 +174,43 @@ TEST_F(PlanCommandTest, AnUnusableOracleCacheWarnsAndPlansWithTheOracleInMemory)
   const CairnStreams run =
       RunCairnStreams("plan --scenario " + scenario.string() + " --oracle-cache " + cache + " --json");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_THAT(run.err, HasSubstr("cairn plan: warning: the oracle cache folder '" + cache + "' cannot be used"));
-  EXPECT_THAT(run.err, HasSubstr("building the transition oracle in memory"));
+  // One mechanism, the library's (TransitionOracle::LoadOrBuild): it names the folder and keeps the table.
+  EXPECT_THAT(run.err, HasSubstr("Warning: the transition oracle is not cached: cannot create the folder '" + cache +
+                                 "'"));
+  EXPECT_THAT(run.err, HasSubstr("continuing with the table in memory"));
   EXPECT_THAT(run.out, HasSubstr("\"scenario\": \"tiny\""));
+}
+
+TEST_F(PlanCommandTest, ATimeLimitReachedWhileRasterisingIsANoPlanResult) {
+  // A million cells and a nanosecond: the time runs out at the first row, before any oracle is looked for.
+  const fs::path scenario = dir_ / "large.yaml";
+  std::ofstream(scenario) << R"(name: large floor
+terrain:
+  min: [-5, -5]
+  max: [5, 5]
+  resolution: 0.01
+  regions:
+    - {name: floor, box: {min: [-5, -5], max: [5, 5]}, friction: 1.0}
+start: {left: [0.0, 0.1, 0], right: [0.0, -0.1, 0]}
+goal: {left: [2.0, 0.1, 0], right: [2.0, -0.1, 0]}
+)";
+  const fs::path cache = dir_ / "cache";
+  const std::string plan = "plan --scenario " + scenario.string() + " --time-limit 1e-9 --oracle-cache " +
+                           cache.string();
+  const CairnStreams text = RunCairnStreams(plan);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("no plan    no plan within the time limit of 1e-09 s: the time limit ran out "
+                                  "while rasterising the terrain of '" + scenario.string() + "' (region 1 of 1, "
+                                  "1000 x 1000 cells); raise the limit"));
+  const fs::path out = dir_ / "out";
+  const CairnStreams json = RunCairnStreams(plan + " --json --out " + out.string());
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_THAT(json.out, HasSubstr("\"found\": false, \"reason\": \"no plan within the time limit"));
+  EXPECT_THAT(json.out, HasSubstr("\"steps\": 0"));
+  EXPECT_TRUE(fs::exists(out / "plan.json"));
+  EXPECT_FALSE(fs::exists(out / "plan.png")) << "there is no terrain to draw";
+  EXPECT_FALSE(fs::exists(cache)) << "the oracle was not needed";
+  EXPECT_EQ(json.err, "");
 }
 
 TEST_F(PlanCommandTest, JsonWithoutAPlanHasNullsNotPlaceholders) {
