@@ -129,7 +129,11 @@ TEST(PerceptionCommandsTest, OccupancyBadInputExitsWithOneOrTwo) {
   EXPECT_THAT(scenario.output, HasSubstr("--scenario '/no/such.yaml' does not exist"));
   const CairnRun frames = RunCairn("occupancy --frames 0");
   EXPECT_EQ(frames.exit_code, 2);
-  EXPECT_THAT(frames.output, HasSubstr("--frames '0' is out of range; give an integer from 1 to 1000"));
+  EXPECT_THAT(frames.output, HasSubstr("--frames '0' is out of range; give an integer from 1 to 10000"));
+  // The scenarios' own limit (OccupancyScenario::kMaxFrames), one for the option and the files.
+  const CairnRun many = RunCairn("occupancy --frames 10001");
+  EXPECT_EQ(many.exit_code, 2);
+  EXPECT_THAT(many.output, HasSubstr("--frames '10001' is out of range; give an integer from 1 to 10000"));
   const CairnRun flag = RunCairn("occupancy --bogus");
   EXPECT_EQ(flag.exit_code, 2);
   EXPECT_THAT(flag.output, HasSubstr("--bogus"));

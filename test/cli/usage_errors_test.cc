@@ -60,7 +60,7 @@ std::vector<NumericOption> AllNumericOptions() {
       {stereo + " --gt-scale 8", "--border", "an integer from 0 to 10000"},
       {"occupancy", "--noise-var", "a number from 0 to 65025"},
       {"occupancy", "--peak-ratio", "a number from 0 to 100"},
-      {"occupancy", "--frames", "an integer from 1 to 1000"},
+      {"occupancy", "--frames", "an integer from 1 to 10000"},
       {"occupancy", "--window", "an odd integer from 1 to 2051"},
       {"friction --image i.png --out o", "--eta", "a number from 1e-06 to 0.999999"},
       {train, "--images", "an integer from 2 to 100000"},
