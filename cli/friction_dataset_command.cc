@@ -2,7 +2,9 @@
 // (StereoMaterialScene) as colour image + label-index PNG pairs, for training segmentation networks outside Cairn
 // (scripts/train_material_net.py).
 
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -17,6 +19,7 @@
 #include "choice_option.h"
 #include "command_registry.h"
 #include "numeric_option.h"
+#include "usage_error.h"
 
 namespace cairn::cli {
 namespace {
@@ -57,6 +60,14 @@ int RunFrictionDataset(const FrictionDatasetState& s) {
   using cairn::perception::StereoMaterialScene;
   std::unique_ptr<const MaterialScene> material_scene;
   std::unique_ptr<const StereoMaterialScene> stereo_scene;
+  // Scene i uses seed + i: a sum past 2^32 - 1 would wrap round to seed 0 and repeat scenes.
+  constexpr std::uint64_t kMaxSeed = std::numeric_limits<unsigned>::max();
+  const std::uint64_t last_seed = std::uint64_t{s.seed} + static_cast<std::uint64_t>(s.images) - 1;
+  if (last_seed > kMaxSeed) {
+    throw UsageError("--seed " + std::to_string(s.seed) + " with --images " + std::to_string(s.images) +
+                     " would use seeds up to " + std::to_string(last_seed) + ", past " + std::to_string(kMaxSeed) +
+                     "; give --seed at most " + std::to_string(kMaxSeed - static_cast<std::uint64_t>(s.images) + 1));
+  }
   std::vector<std::string> labels;
   if (s.source == "material") {
     MaterialScene::Options options;
