@@ -171,7 +171,7 @@ Eigen::Isometry3d OccupancyScenario::LookAt(const Eigen::Vector3d& position, con
 }
 
 OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
-  const YamlReader yaml(path);
+  const YamlReader yaml(path, kMaxFileBytes);
   const YAML::Node& root = yaml.root();
   const Reader r(yaml);
   r.CheckMap(root, "", {"camera", "stereo", "noise_variance", "seed", "textures", "objects", "trajectory", "grid"});

@@ -3,6 +3,7 @@
 /// @file
 /// A synthetic occupancy-grid experiment: scene, stereo camera and its trajectory, image noise and evaluation grid.
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -36,6 +37,10 @@ struct OccupancyScenario {
   static constexpr double kMaxNoiseVariance = 255.0 * 255.0;
   /// See kMaxFrames.
   static constexpr double kMaxCoordinate = 1e4;
+  /// Largest scenario file (2 MiB), refused from its size before it is parsed: the limits above admit files of
+  /// under a megabyte (10000 poses and 1000 objects take about 700 KB), and parsing takes time and memory in
+  /// proportion to the file.
+  static constexpr std::size_t kMaxFileBytes = 2u << 20;
 
   /// The scene (textured planes and boxes, each with a material label).
   SyntheticStereoScene scene;

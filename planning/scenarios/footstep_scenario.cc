@@ -155,7 +155,7 @@ bool FootstepScenario::Region::Contains(const Eigen::Vector2d& p) const {
 }
 
 FootstepScenario FootstepScenario::Load(const std::string& path) {
-  const YamlReader yaml(path);
+  const YamlReader yaml(path, kMaxFileBytes);
   const YAML::Node& root = yaml.root();
   yaml.CheckKeys(root, {"name", "robot", "objective", "eta", "materials", "terrain", "obstacles", "start", "goal",
                         "planner"},

@@ -54,6 +54,10 @@ class FootstepScenario {
   static constexpr double kMaxTimeLimit = 1e6;
   /// See kMaxRegions.
   static constexpr double kMaxEpsilon = 100.0;
+  /// Largest scenario file (2 MiB), refused from its size before it is parsed: the count limits above admit
+  /// files of a few hundred kilobytes (1000 box regions and 1000 obstacles take about 100 KB), and parsing takes
+  /// time and memory in proportion to the file (4 MB of obstacles took 3 s and 590 MB before they were counted).
+  static constexpr std::size_t kMaxFileBytes = 2u << 20;
 
   /// Reads and validates a scenario; throws std::invalid_argument naming the file, the line and the key for a
   /// missing, unknown, mistyped or out-of-range value (the limits above, NaN or infinity anywhere), a region

@@ -160,6 +160,16 @@ TEST(PerceptionCommandsTest, OccupancyRunsAYamlScenario) {
   EXPECT_THAT(too_many.output, HasSubstr("has 10 frames"));
 }
 
+TEST(PerceptionCommandsTest, OccupancyRefusesAScenarioFileLargerThanTwoMebibytesBeforeParsingIt) {
+  const std::string path = ::testing::TempDir() + "/perception_commands_padded.yaml";
+  std::ofstream(path) << "# " << std::string(2u << 20, 'x') << "\n";
+  const CairnRun run = RunCairn("occupancy --scenario " + path);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.output, HasSubstr("Cannot read '" + path + "': it has 2097155 bytes, more than the 2097152 a file "
+                                    "of its kind may have."));
+  std::remove(path.c_str());
+}
+
 TEST(PerceptionCommandsTest, OccupancyReportsTheKeyAndLineOfAMalformedScenario) {
   std::ifstream in(BoxesOnFloor());
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
