@@ -16,6 +16,7 @@
 #include "cairn/perception/friction/friction_quantile_image.h"
 #include "cairn/perception/friction/make_material_segmenter.h"
 #include "cairn/perception/friction/material_registry.h"
+#include "cairn/perception/io/image_file.h"
 #include "choice_option.h"
 #include "command_registry.h"
 #include "file_checks.h"
@@ -72,13 +73,12 @@ int Run(const FrictionArguments& args) {
   }
   // Before the work: an --out that cannot be replaced fails now, not after it.
   AtomicOutputDirectory out(args.out, IsFrictionOutput);
+  // The header's size is checked against kMaxImagePixels before anything is decoded (a small file may claim
+  // gigapixels); a corrupt or truncated file is one line naming it, never a decoder's own text.
   cv::Mat image;
   {
-    const QuietStderr quiet;  // libpng's own "Read Error" text; the message below says it in one line
-    image = cv::imread(args.image, cv::IMREAD_UNCHANGED);
-  }
-  if (image.empty()) {
-    throw std::runtime_error("Cannot decode the image '" + args.image + "'; give a PNG, JPEG or PGM file.");
+    const QuietStderr quiet;
+    image = perception::ReadImageFile(args.image, cv::IMREAD_UNCHANGED);
   }
   if (image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
     throw std::invalid_argument("The image '" + args.image + "' has " + cairn::FormatShort(image.channels()) +

@@ -2,7 +2,9 @@
 // (StereoMaterialScene) as colour image + label-index PNG pairs, for training segmentation networks outside Cairn
 // (scripts/train_material_net.py).
 
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -12,11 +14,13 @@
 
 #include "cairn/common/atomic_output_directory.h"
 #include "cairn/common/json_writer.h"
+#include "cairn/common/number_text.h"
 #include "cairn/perception/synthetic/material_scene.h"
 #include "cairn/perception/synthetic/stereo_material_scene.h"
 #include "choice_option.h"
 #include "command_registry.h"
 #include "numeric_option.h"
+#include "usage_error.h"
 
 namespace cairn::cli {
 namespace {
@@ -57,6 +61,14 @@ int RunFrictionDataset(const FrictionDatasetState& s) {
   using cairn::perception::StereoMaterialScene;
   std::unique_ptr<const MaterialScene> material_scene;
   std::unique_ptr<const StereoMaterialScene> stereo_scene;
+  // Scene i uses seed + i: a sum past 2^32 - 1 would wrap round to seed 0 and repeat scenes.
+  constexpr std::uint64_t kMaxSeed = std::numeric_limits<unsigned>::max();
+  const std::uint64_t last_seed = std::uint64_t{s.seed} + static_cast<std::uint64_t>(s.images) - 1;
+  if (last_seed > kMaxSeed) {
+    throw UsageError("--seed " + cairn::FormatShort(s.seed) + " with --images " + cairn::FormatShort(s.images) +
+                     " would use seeds up to " + cairn::FormatShort(last_seed) + ", past " + cairn::FormatShort(kMaxSeed) +
+                     "; give --seed at most " + cairn::FormatShort(kMaxSeed - static_cast<std::uint64_t>(s.images) + 1));
+  }
   std::vector<std::string> labels;
   if (s.source == "material") {
     MaterialScene::Options options;

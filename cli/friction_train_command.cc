@@ -2,8 +2,10 @@
 // held-out renders (pixel and class-average accuracy, calibration) and saves the model.
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -51,6 +53,18 @@ constexpr double kMaxTrainingPixels = 268435456.0;
 
 int RunFrictionTrain(const FrictionTrainState& s) {
   using namespace cairn::perception;
+  // Training scene i uses seed + i, test scene i seed + kTestSeedOffset + i (the larger, as --images is below the
+  // offset): a sum past 2^32 - 1 would wrap round onto other seeds, the training ones among them.
+  constexpr std::uint64_t kMaxSeed = std::numeric_limits<unsigned>::max();
+  const std::uint64_t last_seed =
+      std::uint64_t{s.seed} + kTestSeedOffset + static_cast<std::uint64_t>(s.test_images) - 1;
+  if (last_seed > kMaxSeed) {
+    throw UsageError("--seed " + cairn::FormatShort(s.seed) + " with --test-images " + cairn::FormatShort(s.test_images) +
+                     " would use seeds up to " + cairn::FormatShort(last_seed) + " (test scenes start " +
+                     cairn::FormatShort(kTestSeedOffset) + " after the seed), past " + cairn::FormatShort(kMaxSeed) +
+                     "; give --seed at most " +
+                     cairn::FormatShort(kMaxSeed - kTestSeedOffset - static_cast<std::uint64_t>(s.test_images) + 1));
+  }
   // The training renders are all held in memory: bound their pixels before rendering any.
   const double pixels = static_cast<double>(s.images) * s.width * s.height;
   if (pixels > kMaxTrainingPixels) {

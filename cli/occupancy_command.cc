@@ -29,9 +29,6 @@
 namespace cairn::cli {
 namespace {
 
-// Frames are rendered and matched one after the other; more than this is no experiment but an hour-long run.
-constexpr int kMaxFrames = 1000;
-
 struct OccupancyState {
   std::string scenario{"bars"};
   std::string model{"merrell"};
@@ -159,9 +156,9 @@ void RegisterOccupancyCommand(CommandRegistry* registry) {
                                                        "scenario's", NumberRange::Closed(0.0, 255.0 * 255.0));
                   AddNumberOption(app, "--peak-ratio", &s->peak_ratio, "WTA model: minimum peak ratio (0: off)",
                                   NumberRange::Closed(0.0, 100.0));
-                  CLI::Option* frames = AddNumberOption(app, "--frames", &s->frames,
-                                                        "Number of frames (YAML: the first N of the file's)",
-                                                        NumberRange::Closed(1, kMaxFrames));
+                  CLI::Option* frames =
+                      AddNumberOption(app, "--frames", &s->frames, "Number of frames (YAML: the first N of the file's)",
+                                      NumberRange::Closed(1, perception::OccupancyScenario::kMaxFrames));
                   AddChoiceOption(app, "--cost", &s->cost, "Window cost", {"ssd", "btsad"});
                   AddNumberOption(app, "--window", &s->window, "Window side (ssd: at most 181)",
                                   NumberRange::Closed(1, 2051).OddOnly());

@@ -1,13 +1,8 @@
 // `cairn plan`: energy- and friction-aware footstep planning with step timing on a scenario file.
 
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -16,8 +11,10 @@
 
 #include "cairn/common/atomic_output_directory.h"
 #include "cairn/common/json_writer.h"
+#include "cairn/common/number_text.h"
 #include "cairn/planning/footstep/plan_footsteps.h"
 #include "cairn/planning/footstep/refine_footstep_plan.h"
+#include "cairn/planning/footstep/time_limit_reached.h"
 #include "cairn/planning/locomotion/transition_oracle.h"
 #include "cairn/planning/locomotion/walking_model.h"
 #include "cairn/planning/locomotion/walking_objective.h"
@@ -58,59 +55,23 @@ std::string DefaultOracleCache() {
 // The files `--out` holds; the folder is replaced as a whole (AtomicOutputDirectory).
 bool IsPlanOutput(const std::string& name) { return name == "plan.json" || name == "plan.png"; }
 
-void Warn(const std::string& message) { std::fprintf(stderr, "cairn plan: warning: %s\n", message.c_str()); }
-
-// The oracle from the cache folder, or built (with a progress bar) and saved there. A cache folder that cannot be
-// created or written is no reason to fail: the oracle is then built in memory, with a warning, and not kept.
+// The oracle from the cache folder, or built (with a progress bar) and saved there by
+// TransitionOracle::LoadOrBuild, which creates the folder. A cache that cannot be created or written is no reason
+// to fail: the library warns on stderr and the table is used from memory, not kept.
 TransitionOracle LoadOrBuildOracle(const std::string& cache, const WalkingModel& model, WalkingObjective objective) {
   const OracleGrid grid = OracleGrid::Default(model);
-  grid.Validate(model.reach());
   const std::string path = cache + "/" + model.name() + "-" + to_string(objective) + ".oracle";
-  std::error_code error;
-  std::filesystem::create_directories(cache, error);
-  std::string unusable;
-  if (error) {
-    unusable = error.message();
-  } else if (!std::filesystem::is_directory(cache, error)) {
-    unusable = "not a folder";
-  } else if (::access(cache.c_str(), W_OK) != 0) {
-    unusable = std::strerror(errno);
-  }
-  std::string reason;
-  if (std::filesystem::is_regular_file(path, error)) {
-    try {
-      TransitionOracle oracle = TransitionOracle::Load(path, model, objective, grid);
-      std::fprintf(stderr, "Loaded transition oracle %s (%zu entries)\n", path.c_str(), oracle.num_entries());
-      return oracle;
-    } catch (const std::runtime_error& failure) {
-      reason = failure.what();
-    }
-  }
-  if (!unusable.empty()) {
-    Warn("the oracle cache folder '" + cache + "' cannot be used (" + unusable +
-         "); building the transition oracle in memory, it will not be kept (give a writable --oracle-cache)");
-  } else if (!reason.empty()) {
-    std::fprintf(stderr, "Rebuilding transition oracle: %s\n", reason.c_str());
-  } else {
-    std::fprintf(stderr, "Building transition oracle %s (%zu entries, objective %s)\n", path.c_str(),
-                 grid.num_entries(), to_string(objective));
-  }
   OracleBuildOptions build;
   ProgressBar bar = ProgressBar::ForStderr("building the transition oracle");
   build.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
-  TransitionOracle oracle = TransitionOracle::Build(model, objective, grid, build);
-  if (unusable.empty()) {
-    try {
-      oracle.Save(path);
-    } catch (const std::runtime_error& failure) {
-      Warn(std::string("the transition oracle is not cached: ") + failure.what());
-    }
-  }
-  return oracle;
+  return TransitionOracle::LoadOrBuild(path, model, objective, grid, build, &std::cerr);
 }
 
+// The plan as JSON. With `with_wall_times` it also holds the search's and the refinement's wall-clock times
+// (`plan_ms`, `first_plan_ms`, `refine_ms`): the report on stdout has them, plan.json does not, so that the same
+// scenario gives the same bytes on every run and machine.
 std::string PlanJson(const FootstepScenario& scenario, const FootstepPlan& plan, WalkingObjective objective,
-                     double refine_ms) {
+                     double refine_ms, bool with_wall_times) {
   // Without a plan its measures do not exist, nor a first-plan time without a first plan: the writer gets NaN
   // (JSON null) instead of the zeros and the -1 placeholder the struct holds.
   const double none = std::numeric_limits<double>::quiet_NaN();
@@ -127,9 +88,12 @@ std::string PlanJson(const FootstepScenario& scenario, const FootstepPlan& plan,
   json.Key("min_friction_margin").Number(measure(plan.min_friction_margin));
   json.Key("epsilon").Number(measure(plan.statistics.epsilon));
   json.Key("expansions").Integer(plan.statistics.expansions);
-  json.Key("plan_ms").Number(1e3 * plan.statistics.plan_seconds, ms);
-  json.Key("first_plan_ms").Number(first_plan_ms, ms);
-  json.Key("refine_ms").Number(refine_ms, ms).Key("footsteps").BeginArray();
+  if (with_wall_times) {
+    json.Key("plan_ms").Number(1e3 * plan.statistics.plan_seconds, ms);
+    json.Key("first_plan_ms").Number(first_plan_ms, ms);
+    json.Key("refine_ms").Number(refine_ms, ms);
+  }
+  json.Key("footsteps").BeginArray();
   for (const PlannedStep& s : plan.steps) {
     json.BeginObject().Key("side").String(FootSideName(s.side)).Key("x").Number(s.pose.x).Key("y").Number(s.pose.y);
     json.Key("z").Number(s.pose.z).Key("theta").Number(s.pose.theta);
@@ -172,12 +136,53 @@ int Run(const PlanArguments& args) {
       ParseWalkingObjective(args.objective.empty() ? scenario.objective() : args.objective);
   FootstepPlannerOptions options = scenario.planner();
   if (args.time_limit > 0.0) options.search.time_limit = args.time_limit;
-  const TerrainMap terrain = scenario.BuildTerrain();
+  // The time limit covers the terrain's rasterisation and the planning (the heuristic's precomputation and the
+  // search), not the transition oracle: that is loaded from the cache, or built once for every later run.
+  using Clock = std::chrono::steady_clock;
+  const double time_limit = options.search.time_limit;
+  const Clock::time_point start = Clock::now();
+  const auto seconds_since_start = [start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const Clock::time_point deadline =
+      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit));
+  std::optional<TerrainMap> terrain;
+  FootstepPlan plan;
+  try {
+    terrain.emplace(scenario.BuildTerrain(deadline));
+  } catch (const TimeLimitReached& error) {
+    plan.reason = "no plan within the time limit of " + FormatShort(time_limit) + " s: " + error.what() +
+                  "; raise the limit (--time-limit, or the scenario's planner time_limit), crop the terrain to the "
+                  "region around start and goal, or coarsen its resolution";
+  }
+  const double terrain_seconds = seconds_since_start();
+  // The search gets what the rasterisation left; when nothing is left the time ran out there.
+  const double remaining = time_limit - terrain_seconds;
+  if (terrain && !(remaining > 0.0)) {
+    plan.reason = "no plan within the time limit of " + FormatShort(time_limit) +
+                  " s: rasterising the terrain took all of it; raise the limit (--time-limit, or the scenario's "
+                  "planner time_limit) or coarsen the terrain's resolution";
+  }
+  if (!plan.reason.empty()) {
+    // A result, not a failure: plan.json (there is no terrain to draw) and the summary say why there is no plan.
+    plan.statistics.plan_seconds = terrain_seconds;
+    if (!args.out.empty()) {
+      AtomicOutputDirectory out(args.out, IsPlanOutput);
+      out.WriteFile("plan.json", PlanJson(scenario, plan, objective, 0.0, false) + "\n");
+      out.Commit();
+    }
+    if (args.json) {
+      std::printf("%s\n", PlanJson(scenario, plan, objective, 0.0, true).c_str());
+    } else {
+      PrintSummary(scenario, plan, objective);
+      if (!args.out.empty()) std::printf("wrote      %s/plan.json\n", args.out.c_str());
+    }
+    return 0;
+  }
+  options.search.time_limit = remaining;
   // Before the oracle and the search: an --out that cannot be written, or a picture too large, fails now
   // instead of after the whole time limit.
   std::optional<AtomicOutputDirectory> out;
   if (!args.out.empty()) {
-    PlanImageSize(terrain);
+    PlanImageSize(*terrain);
     out.emplace(args.out, IsPlanOutput);
   }
 
@@ -194,7 +199,7 @@ int Run(const PlanArguments& args) {
   geometry.foot_width = model->foot_width();
   geometry.body_half_extents = model->body_half_extents();
   geometry.body_bottom = model->body_box_bottom();
-  FootstepPlan plan = PlanFootsteps(terrain, scenario.start(), scenario.goal(), oracle, geometry, options);
+  plan = PlanFootsteps(*terrain, scenario.start(), scenario.goal(), oracle, geometry, options);
   double refine_ms = 0.0;
   if (!args.no_refine) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -202,14 +207,13 @@ int Run(const PlanArguments& args) {
     refine_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
 
-  const std::string json = PlanJson(scenario, plan, objective, refine_ms);
   if (out) {
-    out->WriteFile("plan.png", PlanImagePng(terrain, plan, scenario.goal(), geometry));
-    out->WriteFile("plan.json", json + "\n");
+    out->WriteFile("plan.png", PlanImagePng(*terrain, plan, scenario.goal(), geometry));
+    out->WriteFile("plan.json", PlanJson(scenario, plan, objective, refine_ms, false) + "\n");
     out->Commit();
   }
   if (args.json) {
-    std::printf("%s\n", json.c_str());
+    std::printf("%s\n", PlanJson(scenario, plan, objective, refine_ms, true).c_str());
   } else {
     PrintSummary(scenario, plan, objective);
     if (out) std::printf("wrote      %s/plan.json, %s/plan.png\n", args.out.c_str(), args.out.c_str());

@@ -3,7 +3,6 @@
 
 #include <chrono>
 #include <cctype>
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -16,6 +15,7 @@
 #include "cairn/common/json_writer.h"
 #include "cairn/perception/evaluation/middlebury_pair.h"
 #include "cairn/perception/evaluation/stereo_evaluation.h"
+#include "cairn/perception/io/image_file.h"
 #include "cairn/perception/stereo/compute_confidence.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
@@ -42,8 +42,11 @@ struct StereoEvalState {
   std::string right;
   std::string gt;
   std::string gt_right;
+  // Absent options are not sentinel values: a flag given, with whatever value, is never taken for "automatic".
   double gt_scale{0.0};
-  int dmax{-1};
+  bool gt_scale_given{false};
+  int dmax{0};
+  bool dmax_given{false};
   std::string cost{"btsad"};
   int window{9};
   std::string model{"merrell"};
@@ -83,14 +86,22 @@ int RunStereoEval(const StereoEvalState& s) {
   CheckInputFile("--right", s.right, "an image file");
   CheckInputFile("--gt", s.gt, "an image file");
   if (!s.gt_right.empty()) CheckInputFile("--gt-right", s.gt_right, "an image file");
+  if (!s.gt_scale_given && ReadImageFileInfo(s.gt).bit_depth != 16) {
+    // A 16-bit (KITTI) file states its scale; 8-bit Middlebury files do not, and theirs differ per data set.
+    throw UsageError("--gt-scale is needed: the ground truth '" + s.gt + "' is 8-bit, whose scale differs per "
+                     "data set (Middlebury 2001: --gt-scale 8, tsukuba 16, 2003 quarter size 4, 2005-2006 third "
+                     "size 3)");
+  }
   // libpng prints its own complaint about a corrupt file before the loader reports it.
   cv::Mat left, right, gt, gt_right;
   {
     const QuietStderr quiet;
     left = LoadGrayImage(s.left);
     right = LoadGrayImage(s.right);
-    gt = LoadDisparityImage(s.gt, s.gt_scale);
-    if (!s.gt_right.empty()) gt_right = LoadDisparityImage(s.gt_right, s.gt_scale);
+    gt = s.gt_scale_given ? LoadDisparityImage(s.gt, s.gt_scale) : LoadDisparityImage(s.gt);
+    if (!s.gt_right.empty()) {
+      gt_right = s.gt_scale_given ? LoadDisparityImage(s.gt_right, s.gt_scale) : LoadDisparityImage(s.gt_right);
+    }
   }
   if (left.size() != right.size()) {
     throw std::invalid_argument("left image '" + s.left + "' is " + cairn::FormatShort(left.cols) + "x" +
@@ -115,14 +126,8 @@ int RunStereoEval(const StereoEvalState& s) {
   options.window = s.window;
   options.prefilter = prefilter;
   options.min_disparity = 0;
-  if (s.dmax >= 0) {
-    options.max_disparity = s.dmax;
-  } else {
-    // Default: the ground truth's largest disparity, rounded up to a multiple of 16 as block matchers expect.
-    double max_gt = 0.0;
-    cv::minMaxLoc(gt, nullptr, &max_gt);
-    options.max_disparity = 16 * (static_cast<int>(std::floor(max_gt)) / 16 + 1) - 1;
-  }
+  // Default: the ground truth's largest disparity, rounded up to a multiple of 16 as block matchers expect.
+  options.max_disparity = s.dmax_given ? s.dmax : AutomaticMaxDisparity(gt);
 
   auto start = std::chrono::steady_clock::now();
   DisparityVolume costs;
@@ -194,15 +199,18 @@ void RegisterStereoEvalCommand(CommandRegistry* registry) {
                   app.add_option("--left", s->left, "Left (reference) image")->required();
                   app.add_option("--right", s->right, "Right image")->required();
                   app.add_option("--gt", s->gt, "Left ground-truth disparity PNG (0 = unknown)")->required();
-                  AddNumberOption(app, "--gt-scale", &s->gt_scale, "Ground-truth PNG value per pixel of disparity",
-                                  NumberRange::AboveAtMost(0.0, 255.0))
-                      ->required()
-                      ->default_str("");
+                  CLI::Option* gt_scale =
+                      AddNumberOption(app, "--gt-scale", &s->gt_scale,
+                                      "Ground-truth PNG value per pixel of disparity (default: 256 for a 16-bit KITTI "
+                                      "file; an 8-bit file needs it)",
+                                      NumberRange::AboveAtMost(0.0, 255.0));
+                  gt_scale->default_str("");
                   app.add_option("--gt-right", s->gt_right, "Right ground truth, to exclude occluded pixels");
-                  AddNumberOption(app, "--dmax", &s->dmax,
-                                  "Largest disparity (default: the ground truth's, rounded up to 16k - 1)",
-                                  NumberRange::Closed(0, kMaxDisparity))
-                      ->default_str("");
+                  CLI::Option* dmax = AddNumberOption(app, "--dmax", &s->dmax,
+                                                      "Largest disparity (default: the ground truth's, rounded up "
+                                                      "to 16k - 1)",
+                                                      NumberRange::Closed(0, kMaxDisparity));
+                  dmax->default_str("");
                   AddChoiceOption(app, "--cost", &s->cost, "Window cost", {"ssd", "btsad"});
                   AddNumberOption(app, "--window", &s->window, "Window side (ssd: at most 181)",
                                   NumberRange::Closed(1, 2051).OddOnly());
@@ -215,7 +223,11 @@ void RegisterStereoEvalCommand(CommandRegistry* registry) {
                   AddNumberOption(app, "--border", &s->border, "Ignored border (pixels)",
                                   NumberRange::Closed(0, kMaxBorder));
                   app.add_flag("--json", s->json, "Print one JSON object");
-                  return [s] { return RunStereoEval(*s); };
+                  return [s, gt_scale, dmax] {
+                    s->gt_scale_given = gt_scale->count() > 0;
+                    s->dmax_given = dmax->count() > 0;
+                    return RunStereoEval(*s);
+                  };
                 });
 }
 

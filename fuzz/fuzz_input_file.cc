@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "cairn/common/number_text.h"
+
 namespace cairn::fuzz {
 namespace {
 
@@ -23,8 +25,8 @@ fs::path ScratchRoot() {
 
 FuzzInputFile::FuzzInputFile(const std::string& name) {
   static std::atomic<int> counter{0};
-  const fs::path folder = ScratchRoot() / ("cairn-fuzz-" + std::to_string(::getpid()) + "-" +
-                                           std::to_string(counter.fetch_add(1)));
+  const fs::path folder = ScratchRoot() / ("cairn-fuzz-" + cairn::FormatShort(::getpid()) + "-" +
+                                           cairn::FormatShort(counter.fetch_add(1)));
   std::error_code error;
   fs::remove_all(folder, error);
   if (!fs::create_directories(folder, error)) {

@@ -70,16 +70,19 @@ class DuplicateKeyFinder : public YAML::EventHandler {
   Duplicate duplicate_;
 };
 
-std::string ReadWholeFile(const std::string& path) {
+std::string ReadWholeFile(const std::string& path, std::size_t max_bytes) {
+  if (max_bytes < 1 || max_bytes > YamlReader::kMaxFileBytes) {
+    throw std::invalid_argument("YamlReader: the size limit " + FormatShort(max_bytes) + " for '" + path +
+                                "' must be in [1, " + FormatShort(YamlReader::kMaxFileBytes) + "] bytes.");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument("Cannot read '" + path + "'; check that the file exists and is readable.");
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
   if (size < 0) throw std::invalid_argument("Cannot read '" + path + "'; check that it is a regular file.");
-  if (static_cast<std::size_t>(size) > YamlReader::kMaxFileBytes) {
+  if (static_cast<std::size_t>(size) > max_bytes) {
     throw std::invalid_argument("Cannot read '" + path + "': it has " + FormatShort(static_cast<long long>(size)) +
-                                " bytes, more than the " + FormatShort(YamlReader::kMaxFileBytes) +
-                                " a YAML file may have.");
+                                " bytes, more than the " + FormatShort(max_bytes) + " a file of its kind may have.");
   }
   in.seekg(0, std::ios::beg);
   std::ostringstream text;
@@ -99,7 +102,7 @@ int LineOf(const YAML::Node& node) {
 
 }  // namespace
 
-YamlReader::YamlReader(std::string path) : YamlReader(path, ReadWholeFile(path)) {}
+YamlReader::YamlReader(std::string path, std::size_t max_bytes) : YamlReader(path, ReadWholeFile(path, max_bytes)) {}
 
 YamlReader YamlReader::FromText(std::string path, std::string text) {
   return YamlReader(std::move(path), std::move(text));

@@ -25,13 +25,17 @@ namespace cairn::internal {
 class YamlReader {
  public:
   /// Files larger than this are refused before they are read: Cairn's YAML files are configuration and models of
-  /// a few megabytes at most.
+  /// a few megabytes at most. Loaders of files that should be smaller pass their own limit to the constructor:
+  /// yaml-cpp needs about 140 bytes of memory per byte of a file of short entries, and about a microsecond, long
+  /// before the loader can count them (a 4 MB list took 3 s and 590 MB).
   static constexpr std::size_t kMaxFileBytes = 256u << 20;
 
   /// Reads and parses `path`. Throws std::invalid_argument when the file cannot be read or is larger than
-  /// kMaxFileBytes ("Cannot read 'FILE' ..."), is not valid YAML ("Malformed YAML in 'FILE' at line N: ..."),
-  /// holds a duplicate key ("In 'FILE' line N: the key 'k' appears twice ...") or is not a mapping at the top.
-  explicit YamlReader(std::string path);
+  /// `max_bytes` ("Cannot read 'FILE' ..."; checked from its size before reading, the limit named), is not valid
+  /// YAML ("Malformed YAML in 'FILE' at line N: ..."), holds a duplicate key ("In 'FILE' line N: the key 'k'
+  /// appears twice ...") or is not a mapping at the top. `max_bytes` must be in [1, kMaxFileBytes]
+  /// (std::invalid_argument otherwise).
+  explicit YamlReader(std::string path, std::size_t max_bytes = kMaxFileBytes);
 
   /// Parses `text` as the contents of `path` (for text the caller has already read; `path` names it in
   /// messages and resolves relative paths). Throws as the constructor does.

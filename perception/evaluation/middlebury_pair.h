@@ -9,13 +9,26 @@
 
 namespace cairn::perception {
 
-/// Reads an image as 8-bit grey; throws std::runtime_error naming the path when it is missing or unreadable.
+/// Reads an image as 8-bit grey through ReadImageFile(), so its size is checked against kMaxImagePixels before it
+/// is decoded. Throws std::runtime_error naming the path when it is missing, unreadable or corrupt, and
+/// std::invalid_argument when it is too large or not a PNG, JPEG, PNM or BMP file.
 cv::Mat LoadGrayImage(const std::string& path);
 
-/// Reads a ground-truth disparity PNG (grey, or grey copied into three channels) and divides it by `scale`
-/// (Middlebury: 8, or 16 for tsukuba). Returns CV_32FC1 in pixels; 0 means unknown. Throws std::runtime_error if
-/// the file is missing or unreadable, std::invalid_argument if scale is not positive.
+/// The scale KITTI's 16-bit disparity PNGs use: disparity = value / 256, value 0 = invalid.
+inline constexpr double kKittiDisparityScale = 256.0;
+
+/// Reads a ground-truth disparity PNG and divides its values by `scale` (file value per pixel of disparity).
+/// The bit depth is taken from the file, never reduced: 8-bit files are the Middlebury 2001-2006 layout (grey, or
+/// grey copied into three channels; scale 8 for the 2001 pairs, 16 for tsukuba, 4 for 2003 quarter size, 3 for
+/// 2005-2006 third size), 16-bit files the KITTI layout (scale kKittiDisparityScale). Value 0 means unknown in
+/// both. Returns CV_32FC1 in pixels. Throws std::invalid_argument if `scale` is not positive and finite, or the
+/// file is colour-coded (channels that differ) or neither 8- nor 16-bit; otherwise as LoadGrayImage().
 cv::Mat LoadDisparityImage(const std::string& path, double scale);
+
+/// LoadDisparityImage() with the scale its layout documents: kKittiDisparityScale for a 16-bit file. An 8-bit
+/// file has no standard scale (Middlebury's differ per data set), so it throws std::invalid_argument asking for
+/// one.
+cv::Mat LoadDisparityImage(const std::string& path);
 
 /// Occlusion mask from a left-right check of the two ground-truth maps (CV_32FC1, pixels, 0 = unknown): a left
 /// pixel with disparity d is occluded when the right map at x - d is known and differs from d by more than

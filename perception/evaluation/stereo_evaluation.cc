@@ -3,16 +3,46 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 
+#include "cairn/common/number_text.h"
+
 namespace cairn::perception {
+
+void StereoEvaluationOptions::Validate(int width, int height) const {
+  if (border < 0) {
+    throw std::invalid_argument("stereo evaluation border " + cairn::FormatShort(border) +
+                                " is negative; give the number of pixels to ignore along each edge (e.g. 10)");
+  }
+  const int smaller = std::min(width, height);
+  if (static_cast<std::int64_t>(border) * 2 >= smaller) {
+    throw std::invalid_argument("stereo evaluation border " + cairn::FormatShort(border) + " leaves no pixel of the " +
+                                cairn::FormatShort(width) + "x" + cairn::FormatShort(height) + " image; use at most " +
+                                cairn::FormatShort(std::max(0, (smaller - 1) / 2)));
+  }
+  if (!(bad_threshold >= 0.0) || !std::isfinite(bad_threshold)) {
+    throw std::invalid_argument("stereo evaluation bad_threshold " + FormatShort(bad_threshold) +
+                                " must be finite and >= 0 pixels (the thesis uses 1)");
+  }
+  if (!(gt_interval >= 0.0) || !std::isfinite(gt_interval)) {
+    throw std::invalid_argument("stereo evaluation gt_interval " + FormatShort(gt_interval) +
+                                " must be finite and >= 0 pixels (the thesis uses 1)");
+  }
+}
 
 double RocAuc(const std::vector<float>& confidence, const std::vector<uint8_t>& is_error) {
   if (confidence.size() != is_error.size() || confidence.empty()) {
     throw std::invalid_argument("RocAuc: got " + cairn::FormatShort(confidence.size()) + " confidences and " +
                                 cairn::FormatShort(is_error.size()) + " error flags; pass one flag per pixel, at least one");
+  }
+  // NaN breaks the strict weak order the sort needs (undefined behaviour, not merely a wrong curve).
+  const auto nan = std::find_if(confidence.begin(), confidence.end(), [](float c) { return std::isnan(c); });
+  if (nan != confidence.end()) {
+    throw std::invalid_argument("RocAuc: confidence " + cairn::FormatShort(nan - confidence.begin()) +
+                                " is NaN; confidences must be numbers to be ranked");
   }
   std::vector<std::size_t> order(confidence.size());
   std::iota(order.begin(), order.end(), 0);
@@ -49,23 +79,52 @@ double OptimalAuc(double error_rate) {
   return error_rate + (1.0 - error_rate) * std::log1p(-error_rate);
 }
 
+int AutomaticMaxDisparity(const cv::Mat& ground_truth) {
+  if (ground_truth.empty() || ground_truth.type() != CV_32FC1) {
+    throw std::invalid_argument("AutomaticMaxDisparity: the ground truth must be a non-empty CV_32FC1 image "
+                                "(LoadDisparityImage)");
+  }
+  if (cv::checkRange(ground_truth) == false) {
+    throw std::invalid_argument("AutomaticMaxDisparity: the ground truth holds a non-finite value");
+  }
+  double max_gt = 0.0;
+  cv::minMaxLoc(ground_truth, nullptr, &max_gt);
+  if (!(max_gt > 0.0)) {
+    throw std::invalid_argument("AutomaticMaxDisparity: the ground truth has no known (positive) disparity; give "
+                                "the largest disparity explicitly");
+  }
+  if (max_gt >= ground_truth.cols) {
+    throw std::invalid_argument("AutomaticMaxDisparity: the ground truth's largest disparity " + FormatShort(max_gt) +
+                                " px is not below its width " + cairn::FormatShort(ground_truth.cols) +
+                                " px; check its scale");
+  }
+  const int rounded = 16 * (static_cast<int>(std::floor(max_gt)) / 16 + 1) - 1;
+  return std::min(rounded, ground_truth.cols - 1);
+}
+
 StereoEvaluation EvaluateStereo(const DisparityVolume& confidence, const WtaResult& wta, const cv::Mat& ground_truth,
                                 const cv::Mat& occluded, const StereoEvaluationOptions& options) {
   const int height = confidence.height();
   const int width = confidence.width();
+  if (confidence.num_disparities() == 0) {
+    throw std::invalid_argument("EvaluateStereo: the confidence volume is empty; run ComputeConfidence() first");
+  }
   if (ground_truth.type() != CV_32FC1 || ground_truth.rows != height || ground_truth.cols != width) {
     throw std::invalid_argument("EvaluateStereo: the ground truth is " + cairn::FormatShort(ground_truth.cols) + "x" +
                                 cairn::FormatShort(ground_truth.rows) + " (type " + cairn::FormatShort(ground_truth.type()) +
                                 ") but the images are " + cairn::FormatShort(width) + "x" + cairn::FormatShort(height) +
                                 "; pass the left view's ground truth as CV_32FC1 (LoadDisparityImage)");
   }
-  if (wta.disparity.rows != height || wta.disparity.cols != width) {
+  if (wta.disparity.rows != height || wta.disparity.cols != width || wta.disparity.type() != CV_32FC1 ||
+      wta.best_index.size() != wta.disparity.size() || wta.best_index.type() != CV_32SC1) {
     throw std::invalid_argument("EvaluateStereo: the winner-take-all result does not match the confidence volume's "
-                                "size; compute both from the same cost volume");
+                                "size (or is not a ComputeWinnerTakeAll() result); compute both from the same cost "
+                                "volume");
   }
   if (!occluded.empty() && (occluded.type() != CV_8UC1 || occluded.size() != ground_truth.size())) {
     throw std::invalid_argument("EvaluateStereo: the occlusion mask must be CV_8UC1 of the ground truth's size");
   }
+  options.Validate(width, height);
   const int dmin = confidence.min_disparity();
   const int dmax = confidence.max_disparity();
   std::vector<float> wta_confidence;
@@ -78,7 +137,13 @@ StereoEvaluation EvaluateStereo(const DisparityVolume& confidence, const WtaResu
     const int32_t* best = wta.best_index.ptr<int32_t>(y);
     for (int x = options.border; x < width - options.border; ++x) {
       const float truth = gt[x];
-      if (!(truth > 0.0f) || best[x] < 0) continue;
+      if (best[x] >= confidence.num_disparities()) {
+        throw std::invalid_argument("EvaluateStereo: the winner-take-all index " + cairn::FormatShort(best[x]) +
+                                    " at pixel (" + cairn::FormatShort(x) + ", " + cairn::FormatShort(y) +
+                                    ") is outside the volume's " + cairn::FormatShort(confidence.num_disparities()) +
+                                    " disparities; compute both from the same cost volume");
+      }
+      if (!(truth > 0.0f) || !std::isfinite(truth) || best[x] < 0) continue;
       if (!occluded.empty() && occluded.at<uint8_t>(y, x) != 0) continue;
       if (truth < static_cast<float>(dmin) || truth > static_cast<float>(dmax) || x - truth < 0.0f) continue;
       const float* c = confidence.curve(y, x);
@@ -87,8 +152,9 @@ StereoEvaluation EvaluateStereo(const DisparityVolume& confidence, const WtaResu
       wta_confidence.push_back(c[best[x]]);
       bad.push_back(is_bad ? 1 : 0);
       if (is_bad) {
-        const int lo = std::max(dmin, static_cast<int>(std::ceil(truth - options.gt_interval)));
-        const int hi = std::min(dmax, static_cast<int>(std::floor(truth + options.gt_interval)));
+        // Clamped in double: a wide interval must not overflow the conversion.
+        const int lo = static_cast<int>(std::max<double>(dmin, std::ceil(truth - options.gt_interval)));
+        const int hi = static_cast<int>(std::min<double>(dmax, std::floor(truth + options.gt_interval)));
         double mass = 0.0;
         for (int d = lo; d <= hi; ++d) mass += c[d - dmin];
         c_gt_sum += mass;

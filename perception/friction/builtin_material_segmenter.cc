@@ -29,39 +29,46 @@ struct Samples {
   std::vector<int> y;
 };
 
-void ValidateTrainingSet(int num_labels, const std::vector<cv::Mat>& images, const std::vector<cv::Mat>& labels) {
+void ValidateTrainingSet(int num_labels, int window, const std::vector<cv::Mat>& images,
+                         const std::vector<cv::Mat>& labels) {
   if (images.size() != labels.size()) {
-    throw std::invalid_argument("BuiltinMaterialSegmenter::Train: " + std::to_string(images.size()) +
-                                " images but " + std::to_string(labels.size()) +
+    throw std::invalid_argument("BuiltinMaterialSegmenter::Train: " + cairn::FormatShort(images.size()) +
+                                " images but " + cairn::FormatShort(labels.size()) +
                                 " label images; pass one label image per image.");
   }
   if (images.size() < 2) {
     throw std::invalid_argument("BuiltinMaterialSegmenter::Train: needs at least 2 images (the last ones calibrate "
-                                "the probabilities); got " + std::to_string(images.size()) + ".");
+                                "the probabilities); got " + cairn::FormatShort(images.size()) + ".");
   }
   for (std::size_t i = 0; i < images.size(); ++i) {
     const cv::Mat& image = images[i];
     if (image.empty() || image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
-      throw std::invalid_argument("BuiltinMaterialSegmenter::Train: image " + std::to_string(i) +
+      throw std::invalid_argument("BuiltinMaterialSegmenter::Train: image " + cairn::FormatShort(i) +
                                   " must be a non-empty 8-bit image with 1 or 3 channels; got depth " +
-                                  std::to_string(image.depth()) + " with " + std::to_string(image.channels()) +
+                                  cairn::FormatShort(image.depth()) + " with " + cairn::FormatShort(image.channels()) +
                                   " channel(s).");
+    }
+    if (image.cols < window || image.rows < window) {
+      throw std::invalid_argument("BuiltinMaterialSegmenter::Train: image " + cairn::FormatShort(i) + " is " +
+                                  cairn::FormatShort(image.cols) + "x" + cairn::FormatShort(image.rows) +
+                                  " pixels, smaller than the " + cairn::FormatShort(window) + "x" +
+                                  cairn::FormatShort(window) + " patch window; use larger images or a smaller window.");
     }
     const cv::Mat& label = labels[i];
     if (label.type() != CV_8UC1 || label.size() != image.size()) {
-      throw std::invalid_argument("BuiltinMaterialSegmenter::Train: label image " + std::to_string(i) +
-                                  " must be CV_8UC1 of its image's size " + std::to_string(image.cols) + "x" +
-                                  std::to_string(image.rows) + "; got " + std::to_string(label.cols) + "x" +
-                                  std::to_string(label.rows) + " of type " + std::to_string(label.type()) + ".");
+      throw std::invalid_argument("BuiltinMaterialSegmenter::Train: label image " + cairn::FormatShort(i) +
+                                  " must be CV_8UC1 of its image's size " + cairn::FormatShort(image.cols) + "x" +
+                                  cairn::FormatShort(image.rows) + "; got " + cairn::FormatShort(label.cols) + "x" +
+                                  cairn::FormatShort(label.rows) + " of type " + cairn::FormatShort(label.type()) + ".");
     }
     for (int r = 0; r < label.rows; ++r) {
       const std::uint8_t* row = label.ptr<std::uint8_t>(r);
       for (int c = 0; c < label.cols; ++c) {
         if (row[c] >= num_labels && row[c] != 255) {
-          throw std::invalid_argument("BuiltinMaterialSegmenter::Train: label image " + std::to_string(i) +
-                                      " holds " + std::to_string(row[c]) + " at pixel (" + std::to_string(r) + ", " +
-                                      std::to_string(c) + "); values must be label indices below " +
-                                      std::to_string(num_labels) + " or 255 for unlabelled pixels.");
+          throw std::invalid_argument("BuiltinMaterialSegmenter::Train: label image " + cairn::FormatShort(i) +
+                                      " holds " + cairn::FormatShort(row[c]) + " at pixel (" + cairn::FormatShort(r) + ", " +
+                                      cairn::FormatShort(c) + "); values must be label indices below " +
+                                      cairn::FormatShort(num_labels) + " or 255 for unlabelled pixels.");
         }
       }
     }
@@ -298,10 +305,10 @@ Eigen::MatrixXf ReadMatrix(const YamlReader& yaml, const char* key, Eigen::Index
   const long long c = yaml.Integer(node, "cols", where, 0, kMaxIndex, -1);
   const YAML::Node data = YamlReader::Has(node, "data") ? node["data"] : YAML::Node();
   if (r != rows || c != cols || !data.IsSequence() || static_cast<Eigen::Index>(data.size()) != rows * cols) {
-    yaml.Fail(node, std::string("the model has a malformed '") + key + "': expected " + std::to_string(rows) + "x" +
-                        std::to_string(cols) + " with " + std::to_string(rows * cols) + " values, got rows " +
-                        std::to_string(r) + ", cols " + std::to_string(c) + " and " +
-                        std::to_string(data.IsSequence() ? data.size() : 0) + " values.");
+    yaml.Fail(node, std::string("the model has a malformed '") + key + "': expected " + cairn::FormatShort(rows) + "x" +
+                        cairn::FormatShort(cols) + " with " + cairn::FormatShort(rows * cols) + " values, got rows " +
+                        cairn::FormatShort(r) + ", cols " + cairn::FormatShort(c) + " and " +
+                        cairn::FormatShort(data.IsSequence() ? data.size() : 0) + " values.");
   }
   Eigen::MatrixXf m(rows, cols);
   for (Eigen::Index i = 0; i < rows * cols; ++i) {
@@ -335,22 +342,28 @@ BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Train(const std::vector<std::
                                                          const TrainingOptions& options, TrainingReport* report) {
   if (labels.empty() || labels.size() > 255) {
     throw std::invalid_argument("BuiltinMaterialSegmenter::Train: needs 1 to 255 labels; got " +
-                                std::to_string(labels.size()) + ".");
+                                cairn::FormatShort(labels.size()) + ".");
   }
   if (options.hidden_units < 1 || options.epochs < 1 || options.max_samples_per_label < 1) {
     throw std::invalid_argument("BuiltinMaterialSegmenter::Train: hidden_units, epochs and max_samples_per_label "
-                                "must be >= 1; got " + std::to_string(options.hidden_units) + ", " +
-                                std::to_string(options.epochs) + ", " + std::to_string(options.max_samples_per_label) +
+                                "must be >= 1; got " + cairn::FormatShort(options.hidden_units) + ", " +
+                                cairn::FormatShort(options.epochs) + ", " + cairn::FormatShort(options.max_samples_per_label) +
                                 ".");
   }
-  if (!(options.learning_rate > 0.0) || !(options.weight_decay >= 0.0)) {
-    throw std::invalid_argument("BuiltinMaterialSegmenter::Train: learning_rate must be > 0 and weight_decay >= 0; "
-                                "got " + std::to_string(options.learning_rate) + " and " +
-                                std::to_string(options.weight_decay) + ".");
+  if (options.hidden_units > kMaxHiddenUnits) {
+    throw std::invalid_argument("BuiltinMaterialSegmenter::Train: hidden_units " +
+                                cairn::FormatShort(options.hidden_units) + " is more than the " +
+                                cairn::FormatShort(kMaxHiddenUnits) + " a model may have; try 48.");
+  }
+  if (!(options.learning_rate > 0.0) || !(options.weight_decay >= 0.0) || !std::isfinite(options.learning_rate) ||
+      !std::isfinite(options.weight_decay)) {
+    throw std::invalid_argument("BuiltinMaterialSegmenter::Train: learning_rate must be finite and > 0 and "
+                                "weight_decay finite and >= 0; got " + FormatShort(options.learning_rate) + " and " +
+                                FormatShort(options.weight_decay) + ".");
   }
   if (!(options.calibration_fraction > 0.0 && options.calibration_fraction < 1.0)) {
     throw std::invalid_argument("BuiltinMaterialSegmenter::Train: calibration_fraction must be in (0, 1); got " +
-                                std::to_string(options.calibration_fraction) + ". Try 0.25.");
+                                FormatShort(options.calibration_fraction) + ". Try 0.25.");
   }
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (std::find(labels.begin(), labels.begin() + static_cast<std::ptrdiff_t>(i), labels[i]) !=
@@ -360,8 +373,8 @@ BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Train(const std::vector<std::
     }
   }
   const int num_labels = static_cast<int>(labels.size());
-  ValidateTrainingSet(num_labels, images, label_images);
   const MaterialFeatures features(options.window, options.stride);
+  ValidateTrainingSet(num_labels, options.window, images, label_images);
   const std::size_t num_calibration = std::clamp<std::size_t>(
       static_cast<std::size_t>(std::lround(options.calibration_fraction * static_cast<double>(images.size()))), 1,
       images.size() - 1);
@@ -371,13 +384,13 @@ BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Train(const std::vector<std::
   const Samples all = CollectSamples(features, images, label_images, 0, split);
   if (all.y.empty()) {
     throw std::invalid_argument("BuiltinMaterialSegmenter::Train: the training images (the first " +
-                                std::to_string(split) + ") have no labelled patch centre; label some pixels.");
+                                cairn::FormatShort(split) + ") have no labelled patch centre; label some pixels.");
   }
   Samples train = CapPerLabel(all, num_labels, options.max_samples_per_label, &rng);
   Samples calibration = CollectSamples(features, images, label_images, split, images.size());
   if (calibration.y.empty()) {
     throw std::invalid_argument("BuiltinMaterialSegmenter::Train: the calibration images (the last " +
-                                std::to_string(num_calibration) + ") have no labelled patch centre.");
+                                cairn::FormatShort(num_calibration) + ") have no labelled patch centre.");
   }
 
   const Eigen::VectorXf mean = train.x.rowwise().mean();
@@ -461,10 +474,13 @@ BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Load(const std::string& path)
     constexpr long long kMaxInt = std::numeric_limits<int>::max();
     const long long version = yaml.Integer(root, "version", "the model", -kMaxInt, kMaxInt);
     if (version != kVersion) {
-      yaml.Fail(root["version"], "the file has version " + std::to_string(version) + "; this build reads version " +
-                                     std::to_string(kVersion) + ".");
+      yaml.Fail(root["version"], "the file has version " + cairn::FormatShort(version) + "; this build reads version " +
+                                     cairn::FormatShort(kVersion) + ".");
     }
     const std::vector<std::string> labels = yaml.Strings(yaml.Require(root, "labels", "the model"), "labels");
+    if (labels.empty() || labels.size() > 255) {
+      yaml.Fail(root["labels"], "the model has " + cairn::FormatShort(labels.size()) + " labels; a model has 1 to 255.");
+    }
     const int window = static_cast<int>(yaml.Integer(root, "window", "the model", -kMaxInt, kMaxInt));
     const int stride = static_cast<int>(yaml.Integer(root, "stride", "the model", -kMaxInt, kMaxInt));
     const double temperature = yaml.Number(root, "temperature", "the model");
@@ -476,7 +492,10 @@ BuiltinMaterialSegmenter BuiltinMaterialSegmenter::Load(const std::string& path)
     const Eigen::Index n = static_cast<Eigen::Index>(labels.size());
     const YAML::Node b1_node = yaml.Require(root, "b1", "the model");
     const Eigen::Index h = yaml.Integer(b1_node, "cols", "'b1'", 0, kMaxInt, 0);
-    if (h < 1) yaml.Fail(b1_node, "the model has a malformed 'b1' (no positive 'cols').");
+    if (h < 1 || h > kMaxHiddenUnits) {
+      yaml.Fail(b1_node, "the model has a malformed 'b1': " + cairn::FormatShort(h) + " hidden units, outside [1, " +
+                             cairn::FormatShort(kMaxHiddenUnits) + "].");
+    }
     const Eigen::VectorXf mean = ReadMatrix(yaml, "feature_mean", 1, d).transpose();
     const Eigen::VectorXf inverse_scale = ReadMatrix(yaml, "feature_inverse_scale", 1, d).transpose();
     Eigen::MatrixXf w1 = ReadMatrix(yaml, "w1", h, d);

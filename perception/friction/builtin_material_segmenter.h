@@ -27,7 +27,7 @@ class BuiltinMaterialSegmenter final : public MaterialSegmenter {
     /// Patch side and patch-grid stride in pixels (see MaterialFeatures).
     int window{15};
     int stride{8};
-    /// Hidden units of the perceptron; >= 1.
+    /// Hidden units of the perceptron; in [1, kMaxHiddenUnits].
     int hidden_units{48};
     /// Passes over the training samples; >= 1.
     int epochs{40};
@@ -61,15 +61,19 @@ class BuiltinMaterialSegmenter final : public MaterialSegmenter {
     double nll_after{0.0};
   };
 
-  /// Trains on `images` (8-bit BGR or grey) with `label_images` (CV_8UC1 of the same sizes, values = indices into
-  /// `labels`, 255 = unlabelled). Needs at least 2 images (the last ones calibrate). Throws std::invalid_argument
-  /// naming the bad image, pixel or option.
+  /// Most hidden units a model may have (trained or read from a file).
+  static constexpr int kMaxHiddenUnits = 4096;
+
+  /// Trains on `images` (8-bit BGR or grey, each at least window x window pixels) with `label_images` (CV_8UC1 of
+  /// the same sizes, values = indices into `labels`, 255 = unlabelled). Needs at least 2 images (the last ones
+  /// calibrate). Throws std::invalid_argument naming the bad image, pixel or option.
   static BuiltinMaterialSegmenter Train(const std::vector<std::string>& labels, const std::vector<cv::Mat>& images,
                                         const std::vector<cv::Mat>& label_images, const TrainingOptions& options,
                                         TrainingReport* report = nullptr);
 
   /// Reads a model written by Save(); throws std::invalid_argument naming the file, the line and what is wrong
-  /// with it (and how to re-create it).
+  /// with it (including a window, stride or hidden-unit count beyond the limits above, or more than 255 labels)
+  /// and how to re-create it.
   static BuiltinMaterialSegmenter Load(const std::string& path);
   /// Writes the model as YAML, atomically. Throws std::runtime_error naming the path on failure.
   void Save(const std::string& path) const;

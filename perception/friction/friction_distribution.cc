@@ -94,6 +94,31 @@ FrictionDistribution FrictionDistribution::GeneralizedExtremeValue(double locati
   return FrictionDistribution(Kind::kGeneralizedExtremeValue, location, scale, shape);
 }
 
+void CheckPhysicalFriction(const FrictionDistribution& distribution) {
+  auto check = [](const char* what, double value, double lo, bool lo_open, double hi) {
+    if (!(lo_open ? value > lo : value >= lo) || !(value <= hi)) {
+      throw std::invalid_argument(std::string("Friction distribution: ") + what + " " + FormatShort(value) +
+                                  " is outside " + (lo_open ? "(" : "[") + FormatShort(lo) + ", " + FormatShort(hi) +
+                                  "]; a coefficient of friction is at most " + FormatShort(kMaxFrictionCoefficient) +
+                                  " (use not_walkable for ground no foot may use).");
+    }
+  };
+  switch (distribution.kind()) {
+    case FrictionDistribution::Kind::kNormal:
+    case FrictionDistribution::Kind::kTruncatedNormal:
+      check("the mean", distribution.a(), 0.0, true, kMaxFrictionCoefficient);
+      check("the standard deviation", distribution.b(), 0.0, false, kMaxFrictionCoefficient);
+      break;
+    case FrictionDistribution::Kind::kGeneralizedExtremeValue:
+      check("the location", distribution.a(), 0.0, true, kMaxFrictionCoefficient);
+      check("the scale", distribution.b(), 0.0, true, kMaxFrictionCoefficient);
+      check("the shape", distribution.c(), -kMaxGevShape, false, kMaxGevShape);
+      break;
+    case FrictionDistribution::Kind::kNotWalkable:
+      break;
+  }
+}
+
 FrictionDistribution FrictionDistribution::NotWalkable() { return FrictionDistribution(Kind::kNotWalkable, 0, 0, 0); }
 
 std::string FrictionDistribution::kind_name() const {

@@ -49,4 +49,16 @@ class FrictionDistribution {
   double a_, b_, c_;
 };
 
+/// Largest coefficient of friction a file may state. Rubber on dry rough ground reaches 1 to 2; 10 leaves room
+/// for any real surface and refuses typos such as 1e6 (which would let every step through the chance constraint).
+inline constexpr double kMaxFrictionCoefficient = 10.0;
+/// Largest magnitude of a GEV shape a file may state (|shape| >= 1 already has no mean).
+inline constexpr double kMaxGevShape = 5.0;
+
+/// Throws std::invalid_argument, naming the parameter, its value and the range, unless `distribution` describes
+/// physically meaningful friction: a mean or location in (0, kMaxFrictionCoefficient], a standard deviation or
+/// scale of at most kMaxFrictionCoefficient, a GEV shape within +-kMaxGevShape. "Not walkable" always passes.
+/// For values read from files (registries, scenarios); the factories above accept any finite parameters.
+void CheckPhysicalFriction(const FrictionDistribution& distribution);
+
 }  // namespace cairn::perception

@@ -13,6 +13,8 @@ namespace {
 // No coefficient of friction of a walkable surface comes near this; a search reaching it means the mixture is
 // malformed (e.g. a GEV with a heavy upper tail at the quantile asked for).
 constexpr double kMaxFriction = 100.0;
+// Smallest step of the uniform search: a million CDF evaluations per pixel up to kMaxFriction.
+constexpr double kMinSearchStep = kMaxFriction / 1e6;
 
 double Cdf(const MaterialRegistry& registry, const Eigen::Ref<const Eigen::VectorXd>& p, double mu) {
   double value = 0.0;
@@ -48,6 +50,7 @@ double ExactQuantile(const MaterialRegistry& registry, const Eigen::Ref<const Ei
   high = std::max(high, tolerance);
   while (high - low > tolerance) {
     const double middle = 0.5 * (low + high);
+    if (middle <= low || middle >= high) break;  // a tolerance below the doubles' resolution: as close as it gets
     (Cdf(registry, p, middle) >= target ? high : low) = middle;
   }
   return 0.5 * (low + high);
@@ -67,13 +70,20 @@ double GaussianQuantile(const MaterialRegistry& registry, const Eigen::Ref<const
   return std::max(0.0, mean + deviation * StandardNormalQuantile(target));
 }
 
-void CheckArguments(double eta, double tolerance) {
+void CheckArguments(double eta, QuantileMethod method, double tolerance) {
   if (!(eta > 0.0 && eta < 1.0)) {
     throw std::invalid_argument("eta (the probability that friction is at least the quantile) must be in (0, 1); "
                                 "got " + FormatShort(eta) + ". The thesis uses 0.95.");
   }
   if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
     throw std::invalid_argument("The quantile tolerance must be finite and > 0; got " + FormatShort(tolerance) + ".");
+  }
+  // The uniform search takes up to kMaxFriction / tolerance steps per pixel.
+  if (method == QuantileMethod::kSearch && tolerance < kMinSearchStep) {
+    throw std::invalid_argument("The quantile search step " + FormatShort(tolerance) + " is below " +
+                                FormatShort(kMinSearchStep) + ", which already takes " +
+                                FormatShort(kMaxFriction / kMinSearchStep) +
+                                " steps per pixel; use a larger step or the exact method.");
   }
 }
 
@@ -98,7 +108,7 @@ double MixtureCdf(const MaterialRegistry& registry, const Eigen::Ref<const Eigen
 
 double FrictionQuantile(const MaterialRegistry& registry, const Eigen::Ref<const Eigen::VectorXd>& probabilities,
                         double eta, QuantileMethod method, double tolerance) {
-  CheckArguments(eta, tolerance);
+  CheckArguments(eta, method, tolerance);
   registry.ValidateProbabilities(probabilities);
   return QuantileOfValidated(registry, probabilities, eta, method, tolerance);
 }
@@ -106,7 +116,7 @@ double FrictionQuantile(const MaterialRegistry& registry, const Eigen::Ref<const
 Eigen::VectorXd FrictionQuantiles(const MaterialRegistry& registry,
                                   const Eigen::Ref<const Eigen::MatrixXd>& probabilities, double eta,
                                   QuantileMethod method, double tolerance) {
-  CheckArguments(eta, tolerance);
+  CheckArguments(eta, method, tolerance);
   Eigen::VectorXd quantiles(probabilities.rows());
   Eigen::VectorXd row(probabilities.cols());
   for (Eigen::Index k = 0; k < probabilities.rows(); ++k) {
@@ -114,7 +124,7 @@ Eigen::VectorXd FrictionQuantiles(const MaterialRegistry& registry,
     try {
       registry.ValidateProbabilities(row);
     } catch (const std::invalid_argument& error) {
-      throw std::invalid_argument("Pixel " + std::to_string(k) + ": " + error.what());
+      throw std::invalid_argument("Pixel " + cairn::FormatShort(k) + ": " + error.what());
     }
     quantiles[k] = QuantileOfValidated(registry, row, eta, method, tolerance);
   }

@@ -22,7 +22,8 @@ double MixtureCdf(const MaterialRegistry& registry, const Eigen::Ref<const Eigen
 ///
 /// kSearch returns the largest grid value k·tolerance with F <= 1 − η (so Q − tolerance < result <= Q, as
 /// Algorithm 1); kExact is within tolerance of Q; kGaussian is max(0, m + s Φ⁻¹(1 − η)) for the mixture's mean
-/// m and deviation s. Throws std::invalid_argument for η outside (0, 1) or tolerance <= 0.
+/// m and deviation s. Throws std::invalid_argument for η outside (0, 1), tolerance <= 0, or a kSearch step below
+/// 1e-4 (a million steps up to μ = 100). kExact stops at the doubles' resolution when the tolerance is below it.
 double FrictionQuantile(const MaterialRegistry& registry, const Eigen::Ref<const Eigen::VectorXd>& probabilities,
                         double eta, QuantileMethod method, double tolerance = 1e-4);
 

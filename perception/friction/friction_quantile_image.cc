@@ -417,7 +417,16 @@ FrictionQuantileImage::FrictionQuantileImage(const MaterialRegistry& registry, c
   double high = 0.0;
   for (const auto& material : registry.materials()) high = std::max(high, material.friction.Quantile(target));
   step_ = options.method == QuantileMethod::kExact ? kExactStep : options.tolerance;
-  num_points_ = static_cast<int>(std::ceil(high / step_)) + 2;
+  // Counted in double first: a tiny tolerance or a huge quantile must give this message, not an overflowing cast
+  // and a table of gigabytes.
+  const double points = std::ceil(high / step_) + 2.0;
+  if (!(points <= kMaxTablePoints)) {
+    throw std::invalid_argument("FrictionQuantileImage: a table up to the largest label quantile " + FormatShort(high) +
+                                " in steps of " + FormatShort(step_) + " needs " + FormatShort(points) +
+                                " points, more than the " + FormatShort(kMaxTablePoints) +
+                                " supported; raise the tolerance");
+  }
+  num_points_ = static_cast<int>(points);
   table_.assign(static_cast<std::size_t>(num_points_) * blocks_, Block{});
   for (int j = 0; j < num_points_; ++j) {
     for (int i = 0; i < num_labels_; ++i) {
@@ -554,7 +563,7 @@ std::string FrictionQuantileImage::DescribeFirstBadPixel(const float* row, int r
     if (!(in_range && SumIsOne(sum))) break;
   }
   CAIRN_CHECK(c < cols);  // The validation pass rejected the row, so one of its pixels is bad.
-  return "The material probabilities at pixel (" + std::to_string(r) + ", " + std::to_string(c) + ") " +
+  return "The material probabilities at pixel (" + cairn::FormatShort(r) + ", " + cairn::FormatShort(c) + ") " +
          (in_range ? "sum to " + FormatShort(sum) + ", not 1" : std::string("leave [0, 1]")) +
          "; normalise them (e.g. with a softmax).";
 }
@@ -567,10 +576,10 @@ cv::Mat FrictionQuantileImage::Compute(const cv::Mat& probabilities) const {
 
 void FrictionQuantileImage::Compute(const cv::Mat& probabilities, cv::Mat* quantiles) const {
   if (probabilities.empty() || probabilities.type() != CV_32FC(num_labels_)) {
-    throw std::invalid_argument("Friction quantiles need a CV_32FC(" + std::to_string(num_labels_) +
+    throw std::invalid_argument("Friction quantiles need a CV_32FC(" + cairn::FormatShort(num_labels_) +
                                 ") probability image, one channel per registry label; got type " +
-                                std::to_string(probabilities.type()) + " with " +
-                                std::to_string(probabilities.channels()) + " channel(s).");
+                                cairn::FormatShort(probabilities.type()) + " with " +
+                                cairn::FormatShort(probabilities.channels()) + " channel(s).");
   }
   // The rows are read while quantiles are written: a header keeps the probabilities alive should `quantiles` be
   // the same cv::Mat, and an output sharing their pixels (a one-label image) gets a buffer of its own.

@@ -38,7 +38,12 @@ class FrictionQuantileImage {
     int num_threads{0};
   };
 
-  /// Throws std::invalid_argument for η outside (0, 1), a non-positive tolerance, or an empty registry.
+  /// Most points a CDF table may have (per label: kExact and kSearch tabulate every label's CDF from 0 to the
+  /// largest label quantile; a million points of 16 labels take 64 MB).
+  static constexpr double kMaxTablePoints = 1e6;
+
+  /// Throws std::invalid_argument for η outside (0, 1), a non-positive tolerance, an empty registry, or a table of
+  /// more than kMaxTablePoints points (a tiny tolerance, or a label quantile of implausible friction).
   FrictionQuantileImage(const MaterialRegistry& registry, const Options& options);
 
   /// `probabilities`: CV_32FC(number of labels), channels in registry order, each pixel's summing to 1.

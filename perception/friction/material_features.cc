@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/friction/material_features.h"
 
 #include <algorithm>
@@ -73,13 +74,13 @@ void BgrToLab(const cv::Mat& bgr, std::vector<cv::Mat>* lab) {
 }  // namespace
 
 MaterialFeatures::MaterialFeatures(int window, int stride) : window_(window), stride_(stride) {
-  if (window < 3 || window % 2 == 0) {
-    throw std::invalid_argument("MaterialFeatures: the window must be odd and >= 3 pixels; got " +
-                                std::to_string(window) + ". Try 15.");
+  if (window < 3 || window % 2 == 0 || window > kMaxWindow) {
+    throw std::invalid_argument("MaterialFeatures: the window must be odd and in [3, " + cairn::FormatShort(kMaxWindow) +
+                                "] pixels; got " + cairn::FormatShort(window) + ". Try 15.");
   }
-  if (stride < 1) {
-    throw std::invalid_argument("MaterialFeatures: the stride must be >= 1 pixel; got " + std::to_string(stride) +
-                                ". Try 8.");
+  if (stride < 1 || stride > kMaxStride) {
+    throw std::invalid_argument("MaterialFeatures: the stride must be in [1, " + cairn::FormatShort(kMaxStride) +
+                                "] pixels; got " + cairn::FormatShort(stride) + ". Try 8.");
   }
 }
 
@@ -92,9 +93,15 @@ int MaterialFeatures::CentreOf(int i, int extent) const { return std::min(i * st
 cv::Mat MaterialFeatures::Compute(const cv::Mat& image) const {
   if (image.empty() || image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
     throw std::invalid_argument("MaterialFeatures: needs a non-empty 8-bit image with 1 or 3 channels; got " +
-                                std::to_string(image.rows) + "x" + std::to_string(image.cols) + " with depth " +
-                                std::to_string(image.depth()) + " and " + std::to_string(image.channels()) +
+                                cairn::FormatShort(image.rows) + "x" + cairn::FormatShort(image.cols) + " with depth " +
+                                cairn::FormatShort(image.depth()) + " and " + cairn::FormatShort(image.channels()) +
                                 " channel(s).");
+  }
+  if (image.cols < window_ || image.rows < window_) {
+    throw std::invalid_argument("Material segmentation: the image is " + cairn::FormatShort(image.cols) + "x" +
+                                cairn::FormatShort(image.rows) + " pixels, smaller than the segmenter's " +
+                                cairn::FormatShort(window_) + "x" + cairn::FormatShort(window_) +
+                                " patch window; give an image at least that large or a model with a smaller window.");
   }
   cv::Mat bgr;
   if (image.channels() == 1) {

@@ -24,8 +24,13 @@ class MaterialFeatures {
   /// Number of values per descriptor.
   static constexpr int kDimension = 20;
 
-  /// `window`: odd patch side in pixels, >= 3; `stride`: distance between patch centres, >= 1. Throws
-  /// std::invalid_argument naming the bad value.
+  /// Largest patch side and stride, pixels (a model file states both).
+  static constexpr int kMaxWindow = 1023;
+  /// See kMaxWindow.
+  static constexpr int kMaxStride = 1023;
+
+  /// `window`: odd patch side in pixels, in [3, kMaxWindow]; `stride`: distance between patch centres, in
+  /// [1, kMaxStride]. Throws std::invalid_argument naming the bad value.
   MaterialFeatures(int window = 15, int stride = 8);
 
   /// The patch grid of an image: ceil(cols / stride) x ceil(rows / stride) centres.
@@ -34,7 +39,8 @@ class MaterialFeatures {
   int CentreOf(int i, int extent) const;
 
   /// Descriptors of every patch of an 8-bit BGR (or grey) image: CV_32F, one row per grid cell (row-major over
-  /// the grid), kDimension columns. Throws std::invalid_argument for an empty or non-8-bit image.
+  /// the grid), kDimension columns. Throws std::invalid_argument for an empty or non-8-bit image, or one narrower
+  /// or lower than the window (its patches would be mostly mirrored border).
   cv::Mat Compute(const cv::Mat& image) const;
 
   int window() const { return window_; }

@@ -17,6 +17,10 @@ namespace {
 
 using cairn::internal::YamlReader;
 
+// Bounds on what a registry file may state.
+constexpr int kMaxMaterials = 1000;
+constexpr long long kMaxContacts = 1000000000;
+
 // The posterior of μ ~ N(m, s²) after one observation, and the observation's likelihood under N(m, s²).
 struct Posterior {
   double mean;
@@ -82,8 +86,8 @@ MaterialRegistry MaterialRegistry::ThesisTable33() {
 
 const MaterialRegistry::Material& MaterialRegistry::material(int index) const {
   if (index < 0 || index >= size()) {
-    throw std::out_of_range("MaterialRegistry has " + std::to_string(size()) + " materials; index " +
-                            std::to_string(index) + " is out of range.");
+    throw std::out_of_range("MaterialRegistry has " + cairn::FormatShort(size()) + " materials; index " +
+                            cairn::FormatShort(index) + " is out of range.");
   }
   return materials_[index];
 }
@@ -104,8 +108,8 @@ int MaterialRegistry::IndexOf(const std::string& label) const {
 
 void MaterialRegistry::ValidateProbabilities(const Eigen::Ref<const Eigen::VectorXd>& probabilities) const {
   if (probabilities.size() != size()) {
-    throw std::invalid_argument("Material probabilities have " + std::to_string(probabilities.size()) +
-                                " entries but the registry has " + std::to_string(size()) +
+    throw std::invalid_argument("Material probabilities have " + cairn::FormatShort(probabilities.size()) +
+                                " entries but the registry has " + cairn::FormatShort(size()) +
                                 " labels; give one probability per label, in registry order.");
   }
   double sum = 0.0;
@@ -126,11 +130,14 @@ void MaterialRegistry::ValidateProbabilities(const Eigen::Ref<const Eigen::Vecto
 Eigen::VectorXd MaterialRegistry::UpdateFromContact(const Eigen::Ref<const Eigen::VectorXd>& probabilities,
                                                     const ContactObservation& observation) {
   ValidateProbabilities(probabilities);
-  if (!std::isfinite(observation.value) ||
-      (observation.kind == ContactObservation::Kind::kMeasured && !(observation.stddev > 0.0))) {
-    throw std::invalid_argument("UpdateFromContact: the observation needs a finite value (got " +
-                                FormatShort(observation.value) + ") and, when measured, a noise stddev > 0 (got " +
-                                FormatShort(observation.stddev) + ").");
+  if (!(observation.value >= 0.0 && observation.value <= kMaxFrictionCoefficient) ||
+      (observation.kind == ContactObservation::Kind::kMeasured &&
+       !(observation.stddev > 0.0 && observation.stddev <= kMaxFrictionCoefficient))) {
+    throw std::invalid_argument("UpdateFromContact: the observation needs a value in [0, " +
+                                FormatShort(kMaxFrictionCoefficient) + "] (got " + FormatShort(observation.value) +
+                                ") and, when measured, a noise stddev in (0, " +
+                                FormatShort(kMaxFrictionCoefficient) + "] (got " + FormatShort(observation.stddev) +
+                                ").");
   }
   const int n = size();
   std::vector<Posterior> posteriors(n, Posterior{0.0, 0.0, 0.0});
@@ -206,6 +213,10 @@ MaterialRegistry MaterialRegistry::LoadYaml(const std::string& path) {
   yaml.CheckKeys(root, {"materials"}, "the material registry");
   const YAML::Node list = yaml.Require(root, "materials", "the material registry");
   if (!list.IsSequence()) yaml.Fail(list, "'materials' must be a list of materials.");
+  if (list.size() > static_cast<std::size_t>(kMaxMaterials)) {
+    yaml.Fail(list, "'materials' lists " + cairn::FormatShort(list.size()) + " materials; a registry holds at most " +
+                        cairn::FormatShort(kMaxMaterials) + ".");
+  }
   std::vector<Material> materials;
   for (const YAML::Node& entry : list) {
     if (!YamlReader::Has(entry, "label")) yaml.Fail(entry, "each material needs a 'label'.");
@@ -229,8 +240,8 @@ MaterialRegistry MaterialRegistry::LoadYaml(const std::string& path) {
         yaml.Fail(entry["distribution"], "unknown distribution '" + kind + "' for " + where +
                                              "; use normal, truncated_normal, gev or not_walkable.");
       }
-      material.num_contacts =
-          static_cast<int>(yaml.Integer(entry, "contacts", where, 0, std::numeric_limits<int>::max(), 0));
+      CheckPhysicalFriction(material.friction);
+      material.num_contacts = static_cast<int>(yaml.Integer(entry, "contacts", where, 0, kMaxContacts, 0));
       materials.push_back(std::move(material));
     } catch (const std::invalid_argument& error) {
       const std::string message = error.what();

@@ -37,7 +37,8 @@ class MaterialRegistry {
   static MaterialRegistry ThesisTable33();
 
   /// Reads a registry from YAML (schema in docs of SaveYaml). Throws std::invalid_argument naming the file, the
-  /// line and the key.
+  /// line and the key. Every distribution must be physical friction (CheckPhysicalFriction(): means in (0, 10],
+  /// ...); a file lists at most 1000 materials, each with at most 1e9 contacts.
   static MaterialRegistry LoadYaml(const std::string& path);
   /// Writes the registry (with learned parameters and contact counts) atomically:
   /// @code{.yaml}
@@ -62,7 +63,8 @@ class MaterialRegistry {
   /// Updates the labels' distributions from one contact whose surface had material `probabilities` (from the
   /// segmenter at the contact point). Returns the posterior label probabilities given the observation. Labels
   /// that cannot explain the observation (zero likelihood) keep their distributions. Only normal distributions
-  /// learn; an observation that a GEV or truncated-normal label would have to explain is rejected with a message.
+  /// learn; an observation that a GEV or truncated-normal label would have to explain is rejected with a message,
+  /// as is a value outside [0, kMaxFrictionCoefficient] or a measurement noise outside (0, 10].
   Eigen::VectorXd UpdateFromContact(const Eigen::Ref<const Eigen::VectorXd>& probabilities,
                                     const ContactObservation& observation);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <limits>
 #include <mutex>
@@ -13,6 +14,7 @@
 
 #include "cairn/common/internal/yaml_reader.h"
 #include "cairn/common/number_text.h"
+#include "cairn/perception/io/image_file.h"
 
 namespace cairn::perception {
 
@@ -60,6 +62,11 @@ OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) 
   constexpr long long kMaxInt = std::numeric_limits<int>::max();
   pre.width = static_cast<int>(yaml.AsInteger(yaml.Require(input, "width", "'input'"), "input.width", 1, kMaxInt));
   pre.height = static_cast<int>(yaml.AsInteger(yaml.Require(input, "height", "'input'"), "input.height", 1, kMaxInt));
+  if (static_cast<std::int64_t>(pre.width) * pre.height > kMaxImagePixels) {
+    yaml.Fail(input, "keys 'input.width' and 'input.height' give " + cairn::FormatShort(pre.width) + "x" +
+                         cairn::FormatShort(pre.height) + " pixels, more than the " + cairn::FormatShort(kMaxImagePixels) +
+                         " an input may have.");
+  }
   const std::string order = yaml.String(input, "channel_order", "'input'", "");
   if (order != "rgb" && order != "bgr") {
     yaml.Fail(YamlReader::Has(input, "channel_order") ? input["channel_order"] : input,
@@ -80,9 +87,11 @@ OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) 
   auto network = std::make_shared<Network>();
   try {
     network->net = cv::dnn::readNetFromONNX(model_path);
-  } catch (const cv::Exception& error) {
-    throw std::runtime_error("OnnxMaterialSegmenter: OpenCV cannot read the ONNX model '" + model_path +
-                             "': " + error.msg);
+  } catch (const cv::Exception&) {
+    // OpenCV's text spans lines and names its own sources; the user needs the file and what to check.
+    throw std::runtime_error("OnnxMaterialSegmenter: the model file '" + model_path + "' named by '" + yaml_path +
+                             "' is not an ONNX network OpenCV can read (corrupt, truncated or using unsupported "
+                             "operators).");
   }
   if (network->net.empty()) {
     throw std::runtime_error("OnnxMaterialSegmenter: the ONNX model '" + model_path + "' has no layers.");
@@ -93,20 +102,20 @@ OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) 
   cv::Mat output;
   try {
     output = Forward(&network->net, &network->mutex, pre, cv::Mat(pre.height, pre.width, CV_8UC3, cv::Scalar::all(128)));
-  } catch (const cv::Exception& error) {
+  } catch (const cv::Exception&) {
     throw std::runtime_error("OnnxMaterialSegmenter: the model '" + model_path + "' fails on a " +
-                             std::to_string(pre.width) + "x" + std::to_string(pre.height) +
-                             " input (check input.width/height): " + error.msg);
+                             cairn::FormatShort(pre.width) + "x" + cairn::FormatShort(pre.height) +
+                             " input; check input.width/height in '" + yaml_path + "' against the network's input.");
   }
   if (output.dims != 4 || output.size[0] != 1) {
     throw std::invalid_argument("OnnxMaterialSegmenter: the model '" + model_path +
                                 "' must output a 1 x C x H x W tensor of per-label scores; its output has " +
-                                std::to_string(output.dims) + " dimensions.");
+                                cairn::FormatShort(output.dims) + " dimensions.");
   }
   if (output.size[1] != static_cast<int>(labels.size())) {
     throw std::invalid_argument("OnnxMaterialSegmenter: the label map in '" + yaml_path + "' has " +
-                                std::to_string(labels.size()) + " labels but the model '" + model_path +
-                                "' outputs " + std::to_string(output.size[1]) +
+                                cairn::FormatShort(labels.size()) + " labels but the model '" + model_path +
+                                "' outputs " + cairn::FormatShort(output.size[1]) +
                                 " channels; list exactly one label per output channel, in channel order.");
   }
   return OnnxMaterialSegmenter(std::move(labels), pre, model_path, std::move(network));
@@ -115,7 +124,7 @@ OnnxMaterialSegmenter OnnxMaterialSegmenter::Load(const std::string& yaml_path) 
 cv::Mat OnnxMaterialSegmenter::SegmentNative(const cv::Mat& image) const {
   if (image.empty() || image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
     throw std::invalid_argument("OnnxMaterialSegmenter: needs an 8-bit image with 1 or 3 channels; got depth " +
-                                std::to_string(image.depth()) + " with " + std::to_string(image.channels()) +
+                                cairn::FormatShort(image.depth()) + " with " + cairn::FormatShort(image.channels()) +
                                 " channel(s).");
   }
   cv::Mat bgr;
@@ -124,7 +133,13 @@ cv::Mat OnnxMaterialSegmenter::SegmentNative(const cv::Mat& image) const {
   } else {
     bgr = image;
   }
-  const cv::Mat output = Forward(&network_->net, &network_->mutex, preprocessing_, bgr);
+  cv::Mat output;
+  try {
+    output = Forward(&network_->net, &network_->mutex, preprocessing_, bgr);
+  } catch (const cv::Exception&) {
+    throw std::runtime_error("OnnxMaterialSegmenter: the model '" + model_path_ + "' failed on a " +
+                             cairn::FormatShort(image.cols) + "x" + cairn::FormatShort(image.rows) + " image.");
+  }
   const int n = output.size[1];
   const int rows = output.size[2];
   const int cols = output.size[3];

@@ -1,8 +1,12 @@
 #include "cairn/perception/occupancy/occupancy_grid.h"
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+
+#include "cairn/common/number_text.h"
 
 namespace cairn::perception {
 
@@ -17,18 +21,26 @@ OccupancyGrid::OccupancyGrid(const Eigen::Vector3d& min_corner, double resolutio
       min_log_odds_(static_cast<float>(options.min_log_odds)),
       max_log_odds_(static_cast<float>(options.max_log_odds)) {
   if (!(resolution > 0.0) || !std::isfinite(resolution)) {
-    throw std::invalid_argument("OccupancyGrid: resolution " + std::to_string(resolution) +
-                                " m must be positive (e.g. 0.05 for 5 cm cells)");
+    throw std::invalid_argument("OccupancyGrid: resolution " + FormatShort(resolution) +
+                                " m must be positive and finite (e.g. 0.05 for 5 cm cells)");
   }
+  if (!min_corner.allFinite()) throw std::invalid_argument("OccupancyGrid: the minimum corner must be finite");
+  const std::string size = cairn::FormatShort(dims.x()) + "x" + cairn::FormatShort(dims.y()) + "x" + cairn::FormatShort(dims.z());
   if (dims.minCoeff() <= 0) {
-    throw std::invalid_argument("OccupancyGrid: dimensions " + std::to_string(dims.x()) + "x" +
-                                std::to_string(dims.y()) + "x" + std::to_string(dims.z()) +
-                                " must all be positive");
+    throw std::invalid_argument("OccupancyGrid: dimensions " + size + " must all be positive");
   }
-  if (!(options.min_log_odds < 0.0 && options.max_log_odds > 0.0)) {
-    throw std::invalid_argument("OccupancyGrid: log-odds clamps [" + std::to_string(options.min_log_odds) + ", " +
-                                std::to_string(options.max_log_odds) +
-                                "] must straddle 0 (probability 0.5), e.g. [-2, 3.5]");
+  // In 64 bits: the product of three ints overflows even size_t's range checks.
+  const std::int64_t cells = static_cast<std::int64_t>(dims.x()) * dims.y() * dims.z();
+  if (cells > kMaxCells) {
+    throw std::invalid_argument("OccupancyGrid: dimensions " + size + " are " + cairn::FormatShort(cells) +
+                                " cells, more than the " + cairn::FormatShort(kMaxCells) +
+                                " a grid may hold; coarsen the resolution or shrink the extent");
+  }
+  if (!(options.min_log_odds < 0.0 && options.max_log_odds > 0.0) || !std::isfinite(options.min_log_odds) ||
+      !std::isfinite(options.max_log_odds)) {
+    throw std::invalid_argument("OccupancyGrid: log-odds clamps [" + FormatShort(options.min_log_odds) + ", " +
+                                FormatShort(options.max_log_odds) +
+                                "] must be finite and straddle 0 (probability 0.5), e.g. [-2, 3.5]");
   }
   log_odds_.assign(static_cast<std::size_t>(dims.x()) * dims.y() * dims.z(), 0.0f);
 }

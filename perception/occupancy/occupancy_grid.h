@@ -34,9 +34,13 @@ class OccupancyGrid {
     double max_log_odds{3.4761};
   };
 
+  /// Most cells a grid may hold: 2^30 (4 GiB of log-odds).
+  static constexpr std::int64_t kMaxCells = std::int64_t{1} << 30;
+
   /// A grid whose cell (0, 0, 0) has its minimum corner at `min_corner` (world frame), with `dims` cells of side
-  /// `resolution` metres per axis, all at probability 0.5. Throws std::invalid_argument for a non-positive
-  /// resolution or dimension, or inverted clamps.
+  /// `resolution` metres per axis, all at probability 0.5. Throws std::invalid_argument for a non-positive or
+  /// non-finite resolution, a non-positive dimension, more than kMaxCells cells, a non-finite corner, or
+  /// inverted or non-finite clamps.
   OccupancyGrid(const Eigen::Vector3d& min_corner, double resolution, const Eigen::Vector3i& dims,
                 const Options& options);
   /// Same, with default clamps.

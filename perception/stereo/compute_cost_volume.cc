@@ -1,3 +1,4 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/stereo/compute_cost_volume.h"
 
 #include <algorithm>
@@ -140,9 +141,9 @@ void HorizontalPass(const int32_t* colsum, int width, int num_disp, int radius, 
 cv::Mat ToGray8(const cv::Mat& image, const char* what) {
   if (image.empty()) throw std::invalid_argument(std::string(what) + " image is empty; pass a loaded image");
   if (image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3)) {
-    throw std::invalid_argument(std::string(what) + " image has OpenCV type " + std::to_string(image.type()) +
-                                " (depth " + std::to_string(image.depth()) + ", " +
-                                std::to_string(image.channels()) +
+    throw std::invalid_argument(std::string(what) + " image has OpenCV type " + cairn::FormatShort(image.type()) +
+                                " (depth " + cairn::FormatShort(image.depth()) + ", " +
+                                cairn::FormatShort(image.channels()) +
                                 " channels); stereo matching takes 8-bit grey (CV_8UC1) or BGR (CV_8UC3) images");
   }
   if (image.channels() == 1) return image;
@@ -154,13 +155,13 @@ cv::Mat ToGray8(const cv::Mat& image, const char* what) {
 cv::Mat SobelPrefilter(const cv::Mat& gray, int size, int cap) {
   if (gray.type() != CV_8UC1) {
     throw std::invalid_argument("SobelPrefilter takes a CV_8UC1 image, got OpenCV type " +
-                                std::to_string(gray.type()) + "; convert with ToGray8()");
+                                cairn::FormatShort(gray.type()) + "; convert with ToGray8()");
   }
   if (size != 3 && size != 5 && size != 7 && size != 9) {
-    throw std::invalid_argument("Sobel prefilter size " + std::to_string(size) + " is not supported; use 3, 5, 7 or 9");
+    throw std::invalid_argument("Sobel prefilter size " + cairn::FormatShort(size) + " is not supported; use 3, 5, 7 or 9");
   }
   if (cap < 1 || cap > 63) {
-    throw std::invalid_argument("Sobel prefilter cap " + std::to_string(cap) + " is outside 1..63; OpenCV uses 31");
+    throw std::invalid_argument("Sobel prefilter cap " + cairn::FormatShort(cap) + " is outside 1..63; OpenCV uses 31");
   }
   // A size-s Sobel pair answers a unit ramp with 2^(s-1) * 2^(s-2); the 3x3 pair answers 8. Rescale to 3x3 units so
   // that the cap means the same for every aperture.
@@ -191,12 +192,12 @@ void CostVolumeImpl(const cv::Mat& left_image, const cv::Mat& right_image, const
   const cv::Mat left_gray = ToGray8(left_image, "left");
   const cv::Mat right_gray = ToGray8(right_image, "right");
   if (left_gray.size() != right_gray.size()) {
-    throw std::invalid_argument("left image is " + std::to_string(left_gray.cols) + "x" +
-                                std::to_string(left_gray.rows) + " but right image is " +
-                                std::to_string(right_gray.cols) + "x" + std::to_string(right_gray.rows) +
+    throw std::invalid_argument("left image is " + cairn::FormatShort(left_gray.cols) + "x" +
+                                cairn::FormatShort(left_gray.rows) + " but right image is " +
+                                cairn::FormatShort(right_gray.cols) + "x" + cairn::FormatShort(right_gray.rows) +
                                 "; pass a rectified pair of equal size");
   }
-  options.Validate(left_gray.cols);
+  options.Validate(left_gray.cols, left_gray.rows);
   cv::Mat left = left_gray;
   cv::Mat right = right_gray;
   if (options.prefilter == Prefilter::kSobel) {

@@ -52,10 +52,14 @@ struct CostVolumeOptions {
   /// Worker threads splitting the image rows (0 = one per core; rule: cairn::ResolveThreadCount).
   int num_threads{0};
 
-  /// Checks the options against an image width; throws std::invalid_argument naming the bad value and the fix
-  /// (even or non-positive window, a window whose sums would overflow, inverted range, a range wider than the
-  /// image, bad prefilter settings, negative threads).
-  void Validate(int image_width) const;
+  /// Checks the options against the image size; throws std::invalid_argument naming the bad value and the fix
+  /// (even or non-positive window, a window whose sums would overflow or that is wider or taller than the image,
+  /// inverted range, a range wider than the image, bad prefilter settings, negative threads). Pass
+  /// kUnknownImageSize for a side not known yet (a matcher checks the options before it sees an image).
+  void Validate(int image_width, int image_height) const;
+
+  /// The `image_width`/`image_height` of Validate() that skips the checks against that side.
+  static constexpr int kUnknownImageSize = -1;
 };
 
 }  // namespace cairn::perception

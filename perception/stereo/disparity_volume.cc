@@ -1,6 +1,8 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/stereo/disparity_volume.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -13,13 +15,22 @@ DisparityVolume::DisparityVolume(int height, int width, int min_disparity, int m
 
 void DisparityVolume::Resize(int height, int width, int min_disparity, int max_disparity) {
   if (height <= 0 || width <= 0) {
-    throw std::invalid_argument("DisparityVolume: the image size must be positive, got " + std::to_string(width) +
-                                "x" + std::to_string(height) + "; pass the size of the rectified images");
+    throw std::invalid_argument("DisparityVolume: the image size must be positive, got " + cairn::FormatShort(width) +
+                                "x" + cairn::FormatShort(height) + "; pass the size of the rectified images");
   }
   if (max_disparity < min_disparity) {
-    throw std::invalid_argument("DisparityVolume: max_disparity " + std::to_string(max_disparity) +
-                                " is below min_disparity " + std::to_string(min_disparity) +
+    throw std::invalid_argument("DisparityVolume: max_disparity " + cairn::FormatShort(max_disparity) +
+                                " is below min_disparity " + cairn::FormatShort(min_disparity) +
                                 "; swap them or widen the range");
+  }
+  // In 64 bits: the range of two ints, and the element count, overflow int.
+  const std::int64_t disparities = static_cast<std::int64_t>(max_disparity) - min_disparity + 1;
+  const std::int64_t values = static_cast<std::int64_t>(height) * width * disparities;
+  if (values > kMaxValues) {
+    throw std::invalid_argument("DisparityVolume: " + cairn::FormatShort(width) + "x" + cairn::FormatShort(height) +
+                                " pixels x " + cairn::FormatShort(disparities) + " disparities are " +
+                                cairn::FormatShort(values) + " values, more than the " + cairn::FormatShort(kMaxValues) +
+                                " (4 GiB) a volume may hold; narrow the disparity range or downscale the images");
   }
   height_ = height;
   width_ = width;

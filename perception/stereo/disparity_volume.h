@@ -4,6 +4,7 @@
 /// A per-pixel curve over a disparity range: the stereo cost volume, or a confidence volume computed from it.
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace cairn::perception {
@@ -17,11 +18,15 @@ namespace cairn::perception {
 /// unchanged, so one volume can serve as a preallocated workspace across frames.
 class DisparityVolume {
  public:
+  /// Most values a volume may hold: 2^30 floats, 4 GiB (640x480 over 256 disparities is 79 million).
+  static constexpr std::int64_t kMaxValues = std::int64_t{1} << 30;
+
   /// An empty volume (0 x 0 x 0).
   DisparityVolume() = default;
 
   /// A volume of `height` x `width` pixels over [min_disparity, max_disparity], filled with zeros.
-  /// Throws std::invalid_argument if a size is not positive or max_disparity < min_disparity.
+  /// Throws std::invalid_argument if a size is not positive, max_disparity < min_disparity, or the volume would
+  /// hold more than kMaxValues values.
   DisparityVolume(int height, int width, int min_disparity, int max_disparity);
 
   /// Reshapes the volume; keeps the allocation when the number of elements does not grow. Values are

@@ -21,7 +21,8 @@ struct StereoCalibration {
   /// Distance between the optical centres (metres).
   double baseline{0.1};
 
-  /// Throws std::invalid_argument naming the first non-positive focal length or baseline.
+  /// Throws std::invalid_argument naming the first non-positive or non-finite focal length or baseline, or a
+  /// non-finite principal point.
   void Validate() const;
   /// fx * baseline: depth times disparity.
   double depth_times_disparity() const { return fx * baseline; }

@@ -1,7 +1,6 @@
 #include "cairn/perception/stereo/stereo_matcher.h"
 
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,7 +15,7 @@ using systems::Context;
 
 StereoMatcher::StereoMatcher(const Options& options) : options_(options) {
   // The image width is only known per pair; ComputeCostVolume() checks the range against it.
-  options.cost_volume.Validate(std::numeric_limits<int>::max());
+  options.cost_volume.Validate(CostVolumeOptions::kUnknownImageSize, CostVolumeOptions::kUnknownImageSize);
   const bool fitted = std::isnan(options.parameter);
   if (!fitted) {
     // Throws for a non-positive parameter or a histogram model, naming the fix.

@@ -1,13 +1,17 @@
+#include "cairn/common/number_text.h"
 #include "cairn/perception/stereo/stereo_source.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include "cairn/common/internal/yaml_reader.h"
+#include "cairn/perception/io/image_file.h"
 
 namespace cairn::perception {
 
@@ -15,21 +19,31 @@ namespace {
 
 using cairn::internal::YamlReader;
 
-cv::Mat ReadGrey(const YamlReader& yaml, const YAML::Node& frame, const std::string& key, const std::string& where) {
+// Every frame holds two grey images in memory for the source's lifetime: bound them all, not only each one.
+constexpr std::int64_t kMaxTotalPixels = std::int64_t{1} << 30;
+constexpr int kMaxFrames = 100000;
+
+cv::Mat ReadGrey(const YamlReader& yaml, const YAML::Node& frame, const std::string& key, const std::string& where,
+                 std::int64_t* pixel_budget) {
   const std::string path = yaml.Resolve(yaml.String(frame, key, where));
-  cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
-  if (image.empty()) {
-    yaml.Fail(frame[key], where + " names image '" + path +
-                              "', which cannot be read; paths are relative to the YAML file's folder.");
+  try {
+    cv::Mat image = ReadImageFile(path, cv::IMREAD_GRAYSCALE, std::min(kMaxImagePixels, *pixel_budget));
+    *pixel_budget -= static_cast<std::int64_t>(image.total());
+    return image;
+  } catch (const std::exception& error) {
+    const bool budget = *pixel_budget < kMaxImagePixels && dynamic_cast<const std::invalid_argument*>(&error);
+    yaml.Fail(frame[key], where + " names image '" + path + "', which cannot be read (" + error.what() + ")" +
+                              (budget ? "; a source holds at most " + cairn::FormatShort(kMaxTotalPixels) +
+                                            " pixels in all its images."
+                                      : std::string("; paths are relative to the YAML file's folder.")));
   }
-  return image;
 }
 
 }  // namespace
 
 StereoSource::StereoSource(const std::string& yaml_path, double period) : period_(period) {
   if (!(period > 0.0) || !std::isfinite(period)) {
-    throw std::invalid_argument("StereoSource: period " + std::to_string(period) +
+    throw std::invalid_argument("StereoSource: period " + cairn::FormatShort(period) +
                                 " s must be positive and finite (e.g. 0.1 for 10 frames/s)");
   }
   const YamlReader yaml(yaml_path);
@@ -47,15 +61,20 @@ StereoSource::StereoSource(const std::string& yaml_path, double period) : period
   }
   const YAML::Node frames = yaml.Require(root, "frames", "the stereo source");
   if (!frames.IsSequence() || frames.size() == 0) yaml.Fail(frames, "'frames' must be a non-empty list of frames.");
+  if (frames.size() > static_cast<std::size_t>(kMaxFrames)) {
+    yaml.Fail(frames, "'frames' lists " + cairn::FormatShort(frames.size()) + " frames, more than the " +
+                          cairn::FormatShort(kMaxFrames) + " a source may hold.");
+  }
+  std::int64_t pixel_budget = kMaxTotalPixels;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const YAML::Node f = frames[k];
-    const std::string where = "frame " + std::to_string(k);
+    const std::string where = "frame " + cairn::FormatShort(k);
     yaml.CheckKeys(f, {"left", "right", "translation", "rotation_wxyz"}, where);
-    left_.push_back(ReadGrey(yaml, f, "left", where));
-    right_.push_back(ReadGrey(yaml, f, "right", where));
+    left_.push_back(ReadGrey(yaml, f, "left", where, &pixel_budget));
+    right_.push_back(ReadGrey(yaml, f, "right", where, &pixel_budget));
     if (left_.back().size() != right_.back().size()) {
-      yaml.Fail(f, where + " has left " + std::to_string(left_.back().cols) + "x" + std::to_string(left_.back().rows) +
-                       " but right " + std::to_string(right_.back().cols) + "x" + std::to_string(right_.back().rows) +
+      yaml.Fail(f, where + " has left " + cairn::FormatShort(left_.back().cols) + "x" + cairn::FormatShort(left_.back().rows) +
+                       " but right " + cairn::FormatShort(right_.back().cols) + "x" + cairn::FormatShort(right_.back().rows) +
                        "; give a rectified pair of equal size.");
     }
     const Eigen::VectorXd t = yaml.Numbers(yaml.Require(f, "translation", where), "translation", 3);

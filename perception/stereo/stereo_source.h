@@ -21,7 +21,8 @@ namespace cairn::perception {
 ///   - {left: left_000.png, right: right_000.png,
 ///      translation: [0, 0, 0], rotation_wxyz: [1, 0, 0, 0]}   # X_WC of the left camera
 /// @endcode
-/// Every image is read (as 8-bit grey) and checked when the source is built, so a bad file fails at once.
+/// Every image is read (as 8-bit grey, through ReadImageFile()) and checked when the source is built, so a bad file
+/// fails at once. A source holds at most 100000 frames and 2^30 pixels in all its images.
 /// Frame k = floor(t / period) is shown at time t (the last one after the sequence ends).
 ///
 /// | port | type | meaning |
@@ -34,8 +35,8 @@ namespace cairn::perception {
 class StereoSource final : public systems::LeafSystem {
  public:
   /// Reads `yaml_path`. Throws std::invalid_argument naming the file, the line and the problem (unreadable or
-  /// malformed file, missing, unknown or repeated key, unreadable image, left/right size mismatch, bad calibration)
-  /// or a bad period.
+  /// malformed file, missing, unknown or repeated key, non-finite number, unreadable or too large image, more than
+  /// 100000 frames or 2^30 pixels in all, left/right size mismatch, bad calibration) or a bad period.
   StereoSource(const std::string& yaml_path, double period);
 
   const StereoCalibration& calibration() const { return calibration_; }

@@ -97,7 +97,7 @@ void WtaRowKernel(const float* row, int width, int num_disp, int dmin, bool subp
     // and right of the winner: two reductions, so the winner needs no test per element.
     for (int k = 1; k < num_disp - 1; ++k) {
       const float v = c[k];
-      local[k] = (v <= c[k - 1]) & (v <= c[k + 1]) ? v : kInf;  // a NaN neighbour fails its comparison
+      local[k] = ((v <= c[k - 1]) & (v <= c[k + 1])) ? v : kInf;  // a NaN neighbour fails its comparison
     }
     second = LaneMin(1, std::max(1, best), second, [local](int k) { return local[k]; });
     second = LaneMin(std::max(1, best + 1), num_disp - 1, second, [local](int k) { return local[k]; });

@@ -8,8 +8,9 @@
 namespace cairn::perception {
 
 BarsScenario BarsScenario::Make(int frames) {
-  if (frames < 1) {
-    throw std::invalid_argument("BarsScenario: " + cairn::FormatShort(frames) + " frames; ask for at least 1 (the thesis uses 20)");
+  if (frames < 1 || frames > OccupancyScenario::kMaxFrames) {
+    throw std::invalid_argument("BarsScenario: " + cairn::FormatShort(frames) + " frames; ask for 1 to " +
+                                cairn::FormatShort(OccupancyScenario::kMaxFrames) + " (the thesis uses 20)");
   }
   BarsScenario s;
   s.calibration = StereoCalibration{600.0, 600.0, 319.5, 239.5, 0.3};

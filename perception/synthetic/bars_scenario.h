@@ -48,7 +48,8 @@ struct BarsScenario {
   /// Cells per axis.
   Eigen::Vector3i grid_dims{52, 54, 12};
 
-  /// Builds the scenario with `frames` camera poses (at least 1; throws std::invalid_argument otherwise).
+  /// Builds the scenario with `frames` camera poses (1 to OccupancyScenario::kMaxFrames; throws
+  /// std::invalid_argument otherwise).
   static BarsScenario Make(int frames = 20);
 
   /// The same experiment as a generic OccupancyScenario (noise-free, seed 1), as `cairn occupancy` runs it.

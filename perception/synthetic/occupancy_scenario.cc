@@ -2,6 +2,7 @@
 #include "cairn/perception/synthetic/occupancy_scenario.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -9,14 +10,11 @@
 #include <vector>
 
 #include "cairn/common/internal/yaml_reader.h"
+#include "cairn/common/number_text.h"
 #include "cairn/common/text_suggestions.h"
 
 namespace cairn::perception {
 namespace {
-
-// Every pose of an orbit is built when the file is read, before a frame limit on the command line could cut the
-// sequence short, so the count is bounded here (10^4 frames is 1000 s of camera motion at 10 frames/s).
-constexpr int kMaxOrbitFrames = 10000;
 
 using cairn::internal::YamlReader;
 
@@ -52,13 +50,45 @@ class Reader {
     return value;
   }
 
-  int Integer(const YAML::Node& node, const std::string& key, int min_value,
-              int max_value = std::numeric_limits<int>::max()) const {
-    return static_cast<int>(yaml_.AsInteger(node, key, min_value, max_value));
+  // An integer in [min_value, max_value] (the common reader names 2^40 as out of range, not "not an integer").
+  std::int64_t Integer(const YAML::Node& node, const std::string& key, std::int64_t min_value,
+                       std::int64_t max_value) const {
+    return yaml_.AsInteger(node, key, min_value, max_value);
+  }
+  int Integer(const YAML::Node& node, const std::string& key, int min_value) const {
+    return static_cast<int>(Integer(node, key, min_value, std::numeric_limits<int>::max()));
+  }
+  // A seed: every value of std::uint32_t, no more (a larger one would wrap round to another seed).
+  std::uint32_t Seed(const YAML::Node& node, const std::string& key) const {
+    return static_cast<std::uint32_t>(Integer(node, key, 0, std::numeric_limits<std::uint32_t>::max()));
   }
 
+  // Coordinates and lengths in metres, bounded so that products and norms stay finite.
   Eigen::Vector3d Vector3(const YAML::Node& node, const std::string& key) const {
-    return yaml_.Numbers(node, key, 3);
+    const Eigen::Vector3d v = yaml_.Numbers(node, key, 3);
+    for (int i = 0; i < 3; ++i) {
+      if (!(std::abs(v[i]) <= OccupancyScenario::kMaxCoordinate)) {
+        Fail(node, key + "[" + cairn::FormatShort(i) + "]",
+             "is " + FormatShort(v[i]) + ", beyond the +-" + FormatShort(OccupancyScenario::kMaxCoordinate) +
+                 " a scenario may use");
+      }
+    }
+    return v;
+  }
+  double Bounded(const YAML::Node& node, const std::string& key) const {
+    const double value = Number(node, key);
+    if (!(std::abs(value) <= OccupancyScenario::kMaxCoordinate)) {
+      Fail(node, key, "is " + FormatShort(value) + ", beyond the +-" + FormatShort(OccupancyScenario::kMaxCoordinate) +
+                          " a scenario may use");
+    }
+    return value;
+  }
+  // A list with at most `limit` entries, checked before any of them is read.
+  void CheckCount(const YAML::Node& list, const std::string& key, std::size_t limit) const {
+    if (list.size() > limit) {
+      Fail(list, key, "has " + cairn::FormatShort(list.size()) + " entries, more than the " + cairn::FormatShort(limit) +
+                          " a scenario may have");
+    }
   }
 
   static std::string Join(const std::string& where, const std::string& key) {
@@ -83,7 +113,10 @@ ProceduralTexture ReadTexture(const Reader& r, const YAML::Node& node, const std
   } else {
     r.Fail(kind, Reader::Join(where, "kind"), "is '" + name + "'; expected 'noise', 'checker' or 'uniform'");
   }
-  if (node["scale"]) texture.scale = r.Positive(node["scale"], Reader::Join(where, "scale"));
+  if (node["scale"]) {
+    texture.scale = r.Positive(node["scale"], Reader::Join(where, "scale"));
+    r.Bounded(node["scale"], Reader::Join(where, "scale"));
+  }
   if (node["mean"]) {
     texture.mean = r.Number(node["mean"], Reader::Join(where, "mean"));
     if (texture.mean < 0.0 || texture.mean > 255.0) {
@@ -96,7 +129,7 @@ ProceduralTexture ReadTexture(const Reader& r, const YAML::Node& node, const std
       r.Fail(node["contrast"], Reader::Join(where, "contrast"), "must be in [0, 127.5] (peak deviation from the mean)");
     }
   }
-  if (node["seed"]) texture.seed = static_cast<std::uint32_t>(r.Integer(node["seed"], Reader::Join(where, "seed"), 0));
+  if (node["seed"]) texture.seed = r.Seed(node["seed"], Reader::Join(where, "seed"));
   return texture;
 }
 
@@ -139,7 +172,7 @@ Eigen::Isometry3d OccupancyScenario::LookAt(const Eigen::Vector3d& position, con
 }
 
 OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
-  const YamlReader yaml(path);
+  const YamlReader yaml(path, kMaxFileBytes);
   const YAML::Node& root = yaml.root();
   const Reader r(yaml);
   r.CheckMap(root, "", {"camera", "stereo", "noise_variance", "seed", "textures", "objects", "trajectory", "grid"});
@@ -148,13 +181,14 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
   // Camera.
   const YAML::Node camera = r.Required(root, "", "camera");
   r.CheckMap(camera, "camera", {"width", "height", "fx", "fy", "cx", "cy", "baseline"});
-  s.width = r.Integer(r.Required(camera, "camera", "width"), "camera.width", 16);
-  s.height = r.Integer(r.Required(camera, "camera", "height"), "camera.height", 16);
+  s.width = static_cast<int>(r.Integer(r.Required(camera, "camera", "width"), "camera.width", 16, kMaxImageSide));
+  s.height = static_cast<int>(r.Integer(r.Required(camera, "camera", "height"), "camera.height", 16, kMaxImageSide));
   s.calibration.fx = r.Positive(r.Required(camera, "camera", "fx"), "camera.fx");
   s.calibration.fy = camera["fy"] ? r.Positive(camera["fy"], "camera.fy") : s.calibration.fx;
-  s.calibration.cx = camera["cx"] ? r.Number(camera["cx"], "camera.cx") : 0.5 * (s.width - 1);
-  s.calibration.cy = camera["cy"] ? r.Number(camera["cy"], "camera.cy") : 0.5 * (s.height - 1);
+  s.calibration.cx = camera["cx"] ? r.Bounded(camera["cx"], "camera.cx") : 0.5 * (s.width - 1);
+  s.calibration.cy = camera["cy"] ? r.Bounded(camera["cy"], "camera.cy") : 0.5 * (s.height - 1);
   s.calibration.baseline = r.Positive(r.Required(camera, "camera", "baseline"), "camera.baseline");
+  r.Bounded(camera["baseline"], "camera.baseline");
 
   // Stereo matching range.
   const YAML::Node stereo = r.Required(root, "", "stereo");
@@ -171,14 +205,18 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
   // Noise.
   if (root["noise_variance"]) {
     s.noise_variance = r.Number(root["noise_variance"], "noise_variance");
-    if (s.noise_variance < 0.0) r.Fail(root["noise_variance"], "noise_variance", "must be >= 0 (0: noise-free)");
+    if (!(s.noise_variance >= 0.0 && s.noise_variance <= kMaxNoiseVariance)) {
+      r.Fail(root["noise_variance"], "noise_variance",
+             "must be in [0, " + FormatShort(kMaxNoiseVariance) + "] (0: noise-free; 255^2 drowns every intensity)");
+    }
   }
-  if (root["seed"]) s.seed = static_cast<std::uint32_t>(r.Integer(root["seed"], "seed", 0));
+  if (root["seed"]) s.seed = r.Seed(root["seed"], "seed");
 
   // Named textures, then objects.
   std::map<std::string, ProceduralTexture> textures;
   if (const YAML::Node named = root["textures"]) {
     if (!named.IsMap()) r.Fail(named, "textures", "must be a map from texture names to textures");
+    r.CheckCount(named, "textures", kMaxTextures);
     for (const auto& entry : named) {
       const std::string name = entry.first.Scalar();
       textures[name] = ReadTexture(r, entry.second, "textures." + name);
@@ -191,6 +229,7 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
   if (!objects.IsSequence() || objects.size() == 0) {
     r.Fail(objects, "objects", "must be a non-empty list of planes and boxes");
   }
+  r.CheckCount(objects, "objects", kMaxObjects);
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const YAML::Node object = objects[i];
     const std::string where = "objects[" + cairn::FormatShort(i) + "]";
@@ -218,7 +257,7 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
     } else {
       texture = ReadTexture(r, texture_node, where + ".texture");
     }
-    const int label = r.Integer(r.Required(object, where, "label"), where + ".label", 0);
+    const int label = static_cast<int>(r.Integer(r.Required(object, where, "label"), where + ".label", 0, kMaxLabel));
     if (kind == "plane") {
       const Eigen::Vector3d point = r.Vector3(r.Required(object, where, "point"), where + ".point");
       const YAML::Node normal_node = r.Required(object, where, "normal");
@@ -249,10 +288,12 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
     r.CheckMap(orbit, where, {"center", "radius", "height", "start_deg", "end_deg", "frames", "look_at"});
     const Eigen::Vector3d center = r.Vector3(r.Required(orbit, where, "center"), where + ".center");
     const double radius = r.Positive(r.Required(orbit, where, "radius"), where + ".radius");
-    const double height = orbit["height"] ? r.Number(orbit["height"], where + ".height") : 0.0;
-    const double start = r.Number(r.Required(orbit, where, "start_deg"), where + ".start_deg");
-    const double end = r.Number(r.Required(orbit, where, "end_deg"), where + ".end_deg");
-    const int frames = r.Integer(r.Required(orbit, where, "frames"), where + ".frames", 1, kMaxOrbitFrames);
+    r.Bounded(orbit["radius"], where + ".radius");
+    const double height = orbit["height"] ? r.Bounded(orbit["height"], where + ".height") : 0.0;
+    const double start = r.Bounded(r.Required(orbit, where, "start_deg"), where + ".start_deg");
+    const double end = r.Bounded(r.Required(orbit, where, "end_deg"), where + ".end_deg");
+    // Bounded before the poses are built (a typo of 100000000 frames would need gigabytes).
+    const int frames = static_cast<int>(r.Integer(r.Required(orbit, where, "frames"), where + ".frames", 1, kMaxFrames));
     const Eigen::Vector3d target = orbit["look_at"] ? r.Vector3(orbit["look_at"], where + ".look_at") : center;
     for (int f = 0; f < frames; ++f) {
       const double angle = (frames == 1 ? start : start + (end - start) * f / (frames - 1)) * M_PI / 180.0;
@@ -265,6 +306,7 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
     if (!poses.IsSequence() || poses.size() == 0) {
       r.Fail(poses, "trajectory.poses", "must be a non-empty list of {position, look_at}");
     }
+    r.CheckCount(poses, "trajectory.poses", kMaxFrames);
     for (std::size_t k = 0; k < poses.size(); ++k) {
       const std::string where = "trajectory.poses[" + cairn::FormatShort(k) + "]";
       r.CheckMap(poses[k], where, {"position", "look_at"});
@@ -279,6 +321,7 @@ OccupancyScenario OccupancyScenario::FromYaml(const std::string& path) {
   r.CheckMap(grid, "grid", {"min_corner", "resolution", "dims"});
   s.grid_min_corner = r.Vector3(r.Required(grid, "grid", "min_corner"), "grid.min_corner");
   s.grid_resolution = r.Positive(r.Required(grid, "grid", "resolution"), "grid.resolution");
+  r.Bounded(grid["resolution"], "grid.resolution");
   const YAML::Node dims = r.Required(grid, "grid", "dims");
   if (!dims.IsSequence() || dims.size() != 3) r.Fail(dims, "grid.dims", "must be a list of 3 cell counts [nx, ny, nz]");
   for (int a = 0; a < 3; ++a) s.grid_dims[a] = r.Integer(dims[a], "grid.dims[" + cairn::FormatShort(a) + "]", 1);

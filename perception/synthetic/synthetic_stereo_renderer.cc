@@ -3,12 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
 
+#include "cairn/common/number_text.h"
 #include "cairn/common/parallel_for.h"
+#include "cairn/perception/io/image_file.h"
 
 namespace cairn::perception {
 
@@ -16,18 +19,23 @@ SyntheticStereoRenderer::SyntheticStereoRenderer(const StereoCalibration& calibr
                                                  double noise_variance, std::uint32_t seed)
     : calibration_(calibration), width_(width), height_(height), noise_variance_(noise_variance), seed_(seed) {
   calibration.Validate();
-  if (width <= 0 || height <= 0) {
+  if (width <= 0 || height <= 0 || static_cast<std::int64_t>(width) * height > kMaxImagePixels) {
     throw std::invalid_argument("SyntheticStereoRenderer: image size " + cairn::FormatShort(width) + "x" +
-                                cairn::FormatShort(height) + " must be positive");
+                                cairn::FormatShort(height) + " must be positive with at most " +
+                                cairn::FormatShort(kMaxImagePixels) + " pixels");
   }
-  if (!(noise_variance >= 0.0)) {
+  if (!(noise_variance >= 0.0) || !std::isfinite(noise_variance)) {
     throw std::invalid_argument("SyntheticStereoRenderer: noise variance " + cairn::FormatShort(noise_variance) +
-                                " is negative; use 0 for noise-free images");
+                                " must be finite and >= 0; use 0 for noise-free images");
   }
 }
 
 SyntheticStereoFrame SyntheticStereoRenderer::Render(const SyntheticStereoScene& scene, const Eigen::Isometry3d& X_WC,
                                                      int frame_index) const {
+  if (frame_index < 0) {
+    throw std::invalid_argument("SyntheticStereoRenderer::Render: frame index " + cairn::FormatShort(frame_index) +
+                                " is negative; frames are numbered from 0 (it selects the noise realisation)");
+  }
   SyntheticStereoFrame frame;
   frame.X_WC = X_WC;
   frame.depth.create(height_, width_, CV_32FC1);

@@ -40,12 +40,13 @@ struct SyntheticStereoFrame {
 class SyntheticStereoRenderer {
  public:
   /// `noise_variance` is the variance of the zero-mean Gaussian noise added to each image's intensities (0..255
-  /// scale); `seed` seeds the noise. Throws std::invalid_argument for a bad calibration, a non-positive size or a
-  /// negative variance.
+  /// scale); `seed` seeds the noise. Throws std::invalid_argument for a bad calibration, a non-positive size or one
+  /// above kMaxImagePixels, or a negative or non-finite variance.
   SyntheticStereoRenderer(const StereoCalibration& calibration, int width, int height, double noise_variance = 0.0,
                           std::uint32_t seed = 1);
 
-  /// Renders the pair seen from left-camera pose X_WC; `frame_index` selects the noise realisation.
+  /// Renders the pair seen from left-camera pose X_WC; `frame_index` (>= 0, else std::invalid_argument) selects the
+  /// noise realisation.
   SyntheticStereoFrame Render(const SyntheticStereoScene& scene, const Eigen::Isometry3d& X_WC,
                               int frame_index = 0) const;
 

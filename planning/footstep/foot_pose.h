@@ -25,6 +25,14 @@ struct Stance {
   FootPose right;
 };
 
+/// Smallest lateral distance between the sole centres of a stance that can stand, m.
+inline constexpr double kMinStanceWidth = 1e-3;
+
+/// Why `stance` cannot be a biped's stance, or "" when it can: every coordinate must be finite and the left foot
+/// must stand at least kMinStanceWidth to the left of the right one across the stance's mean heading (feet at one
+/// point, crossed or one behind the other cannot stand).
+std::string StanceGeometryProblem(const Stance& stance);
+
 /// Where a plan must end: a stance, reached when each foot lies within `position_tolerance` (horizontal distance)
 /// and `yaw_tolerance` of its goal foothold.
 struct StanceGoal {

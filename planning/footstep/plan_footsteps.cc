@@ -4,10 +4,16 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
 
+#include <cairn/common/number_text.h>
 #include <cairn/planning/footstep/ara_star.h>
 #include <cairn/planning/footstep/stance_graph.h>
+#include <cairn/planning/footstep/time_limit_reached.h>
 
 namespace cairn::planning {
 namespace {
@@ -37,12 +43,27 @@ std::string CheckFoothold(StanceGraph& graph, const TerrainMap& terrain, const c
   return "";
 }
 
+using Clock = std::chrono::steady_clock;
+
+// Seconds left before `deadline` (infinity without one), at least a nanosecond so that AraStar accepts it and
+// stops at its first check.
+double SecondsLeft(Clock::time_point deadline) {
+  if (deadline == Clock::time_point::max()) return std::numeric_limits<double>::infinity();
+  return std::max(1e-9, std::chrono::duration<double>(deadline - Clock::now()).count());
+}
+
 // The search found no plan although it was not stopped: tell "every way needs more friction" from "no way at
-// all" by planning again with friction ignored.
+// all" by planning again with friction ignored, within what is left of the time limit.
 std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& starts, const FootstepPlannerOptions& options,
-                     const FootstepPlanStatistics& statistics, const StepCostModel& cost_model) {
+                     const FootstepPlanStatistics& statistics, const StepCostModel& cost_model,
+                     Clock::time_point deadline) {
   std::ostringstream reason;
-  graph.set_ignore_friction(true);
+  try {
+    graph.set_ignore_friction(true, deadline);
+  } catch (const TimeLimitReached&) {
+    return "no plan: the search found none, and the time limit ran out before it could tell whether friction or "
+           "the terrain's shape blocks the way";
+  }
   if (std::none_of(starts.begin(), starts.end(), [&](StanceGraph::Key k) { return std::isfinite(graph.Heuristic(k)); })) {
     const StepReach& r = cost_model.reach();
     reason << "the goal is unreachable: no chain of supported footholds, each within one step ("
@@ -54,6 +75,7 @@ std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& st
   AraStarOptions relaxed = options.search;
   relaxed.initial_epsilon = std::max(relaxed.initial_epsilon, 3.0);
   relaxed.final_epsilon = relaxed.initial_epsilon;  // the first plan answers the question
+  relaxed.time_limit = SecondsLeft(deadline);
   const AraStarResult<StanceGraph::Key> frictionless = AraStar(graph, starts, relaxed);
   if (frictionless.found) {
     double needed = 0.0;
@@ -78,12 +100,36 @@ std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& st
 FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const StanceGoal& goal,
                            const StepCostModel& cost_model, const BipedGeometry& geometry,
                            const FootstepPlannerOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
-  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-  StanceGraph graph(terrain, cost_model, geometry, options, goal);
+  const auto t0 = Clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  for (const auto& [stance, what] : {std::pair<const Stance*, const char*>{&start, "start"}, {&goal.stance, "goal"}}) {
+    const std::string problem = StanceGeometryProblem(*stance);
+    if (!problem.empty()) throw std::invalid_argument(std::string("PlanFootsteps: the ") + what + " stance: " + problem);
+  }
+  if (!(options.search.time_limit > 0.0)) {
+    throw std::invalid_argument("PlanFootsteps: time_limit must be > 0 seconds, got " +
+                                FormatShort(options.search.time_limit));
+  }
+  // The time limit covers the whole call: the heuristic's precomputation, the search and the diagnosis after a
+  // failed search. Beyond 1e9 s it is as good as none (and would overflow the clock).
+  const Clock::time_point deadline =
+      options.search.time_limit > 1e9
+          ? Clock::time_point::max()
+          : t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.search.time_limit));
   FootstepPlan plan;
   plan.cost_model = cost_model.description();
   plan.start = start;
+  std::optional<StanceGraph> graph_storage;
+  try {
+    graph_storage.emplace(terrain, cost_model, geometry, options, goal, deadline);
+  } catch (const TimeLimitReached& error) {
+    plan.reason = "no plan within the time limit of " + FormatShort(options.search.time_limit) + " s: " +
+                  error.what() + "; raise the limit, crop the terrain to the region around start and goal, or "
+                  "coarsen the lattice";
+    plan.statistics.plan_seconds = seconds();
+    return plan;
+  }
+  StanceGraph& graph = *graph_storage;
 
   StanceGraph::LatticeFoot left, right, goal_left, goal_right;
   for (const std::string& reason :
@@ -103,7 +149,9 @@ FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const
   // Either foot may move first: the stance where the left foot landed last lets the right foot move, and vice versa.
   const std::vector<StanceGraph::Key> starts = {graph.MakeKey(right, left, FootSide::kLeft),
                                                 graph.MakeKey(left, right, FootSide::kRight)};
-  const AraStarResult<StanceGraph::Key> result = AraStar(graph, starts, options.search);
+  AraStarOptions search = options.search;
+  search.time_limit = SecondsLeft(deadline);
+  const AraStarResult<StanceGraph::Key> result = AraStar(graph, starts, search);
   plan.statistics.expansions = result.expansions;
   plan.statistics.generated = result.generated;
   plan.statistics.improvements = static_cast<int>(result.improvements.size());
@@ -131,7 +179,7 @@ FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const
            << (result.time_limit_reached ? " s" : "") << ", " << result.expansions
            << " stances expanded); raise the limit or start with a larger initial epsilon";
   } else {
-    reason << Diagnose(graph, starts, options, plan.statistics, cost_model);
+    reason << Diagnose(graph, starts, options, plan.statistics, cost_model, deadline);
   }
   plan.reason = reason.str();
   plan.statistics.plan_seconds = seconds();

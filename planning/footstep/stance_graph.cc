@@ -6,8 +6,12 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include <cairn/planning/footstep/internal/yaw_box.h>
+#include <cairn/planning/footstep/time_limit_reached.h>
+
+#include "cairn/common/number_text.h"
 
 namespace cairn::planning {
 namespace {
@@ -37,20 +41,25 @@ StanceGraph::LatticeFoot UnpackFoot(std::uint64_t bits) {
 }  // namespace
 
 StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_model, const BipedGeometry& geometry,
-                         const FootstepPlannerOptions& options, const StanceGoal& goal)
-    : terrain_(terrain), cost_model_(cost_model), geometry_(geometry), options_(options), goal_(goal) {
+                         const FootstepPlannerOptions& options, const StanceGoal& goal, Clock::time_point deadline)
+    : terrain_(terrain),
+      cost_model_(cost_model),
+      geometry_(geometry),
+      options_(options),
+      goal_(goal),
+      deadline_(deadline) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("StanceGraph: " + what); };
   if (!(options.lattice_resolution > 0.0) || !std::isfinite(options.lattice_resolution)) {
-    fail("lattice_resolution must be a positive length, got " + std::to_string(options.lattice_resolution));
+    fail("lattice_resolution must be a positive length, got " + cairn::FormatShort(options.lattice_resolution));
   }
   if (options.orientations < 1 || options.orientations > (1 << kYawBits)) {
-    fail("orientations must be in [1, 32], got " + std::to_string(options.orientations));
+    fail("orientations must be in [1, 32], got " + cairn::FormatShort(options.orientations));
   }
   if (!(options.max_slope > 0.0 && options.max_slope < M_PI / 2)) {
-    fail("max_slope must be in (0, pi/2) rad, got " + std::to_string(options.max_slope));
+    fail("max_slope must be in (0, pi/2) rad, got " + cairn::FormatShort(options.max_slope));
   }
   if (!(options.support_tolerance >= 0.0)) {
-    fail("support_tolerance must be >= 0 m, got " + std::to_string(options.support_tolerance));
+    fail("support_tolerance must be >= 0 m, got " + cairn::FormatShort(options.support_tolerance));
   }
   if (!(geometry.foot_length > 0.0 && geometry.foot_width > 0.0)) {
     fail("the sole must have a positive length and width");
@@ -96,7 +105,15 @@ StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_mo
   ComputeChainDistances();
   if (!(min_cost_per_metre_ >= 0.0) || !std::isfinite(min_cost_per_metre_)) {
     fail("the step cost model's min_cost_per_metre() must be finite and >= 0, got " +
-         std::to_string(min_cost_per_metre_));
+         cairn::FormatShort(min_cost_per_metre_));
+  }
+}
+
+void StanceGraph::CheckDeadline(const char* what) const {
+  if (deadline_ != Clock::time_point::max() && Clock::now() >= deadline_) {
+    throw TimeLimitReached(std::string("the time limit ran out while ") + what + " (" +
+                           cairn::FormatShort(lattice_cols_) + " x " + cairn::FormatShort(lattice_rows_) +
+                           " lattice positions, " + cairn::FormatShort(terrain_.obstacles().size()) + " obstacles)");
   }
 }
 
@@ -321,6 +338,7 @@ void StanceGraph::ComputeChainDistances() {
   std::vector<double> ground(n, 0.0);  // a foothold's height does not depend on its yaw
   std::vector<float> friction(n, 0.0f);
   for (int iy = 0; iy < lattice_rows_; ++iy) {
+    CheckDeadline("evaluating the footholds of the heuristic");
     for (int ix = 0; ix < lattice_cols_; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * lattice_cols_ + ix;
       for (int it = 0; it < options_.orientations; ++it) {
@@ -406,10 +424,12 @@ void StanceGraph::RelaxedDistances(const std::vector<char>& usable, double max_l
         }
       }
     }
+    std::size_t pops = 0;
     while (!queue.empty()) {
       const auto [d, i] = queue.top();
       queue.pop();
       if (d > dist[i]) continue;
+      if ((++pops & 255) == 0) CheckDeadline("computing the heuristic's distances to the goal");
       const int ix = static_cast<int>(i % lattice_cols_), iy = static_cast<int>(i / lattice_cols_);
       const Eigen::Vector2d pi = Position(LatticeFoot{ix, iy, 0});
       for (std::size_t k = 0; k < offsets.size(); ++k) {

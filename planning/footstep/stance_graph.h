@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <unordered_map>
 #include <utility>
@@ -58,15 +59,21 @@ class StanceGraph {
     Eigen::Vector3d normal{Eigen::Vector3d::UnitZ()};
   };
 
+  using Clock = std::chrono::steady_clock;
+
   /// The references must outlive the graph. Throws std::invalid_argument for a lattice the terrain cannot hold
-  /// (more than 4096 positions per axis) or bad options.
+  /// (more than 4096 positions per axis) or bad options, and TimeLimitReached when the heuristic's precomputation
+  /// (every foothold of the lattice, then two Dijkstra searches) is still running at `deadline`.
   StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_model, const BipedGeometry& geometry,
-              const FootstepPlannerOptions& options, const StanceGoal& goal);
+              const FootstepPlannerOptions& options, const StanceGoal& goal,
+              Clock::time_point deadline = Clock::time_point::max());
 
   /// When set, steps ignore friction (used to tell "needs more friction" from "unreachable"); recomputes the
-  /// heuristic.
-  void set_ignore_friction(bool ignore) {
+  /// heuristic, throwing TimeLimitReached if that is still running at `deadline` (the graph must then not be
+  /// searched).
+  void set_ignore_friction(bool ignore, Clock::time_point deadline = Clock::time_point::max()) {
     ignore_friction_ = ignore;
+    deadline_ = deadline;
     ComputeChainDistances();
   }
 
@@ -103,6 +110,8 @@ class StanceGraph {
                     PlannedStep* step, bool count_rejections);
   Eigen::Vector2d Position(const LatticeFoot& foot) const;
   void ComputeChainDistances();
+  // Throws TimeLimitReached when deadline_ has passed, saying that `what` was being computed.
+  void CheckDeadline(const char* what) const;
   void ComputeStrideDistances(const std::vector<char>& usable, const std::vector<float>& friction);
   // Dijkstra from each goal foothold over usable lattice positions, with links up to `max_link` long costing
   // link_cost(i, j, p_i, p_j, length) (infinity: no link).
@@ -130,6 +139,7 @@ class StanceGraph {
   int lattice_cols_;
   int lattice_rows_;
   bool ignore_friction_{false};
+  Clock::time_point deadline_;
   std::unordered_map<std::uint32_t, Foothold> footholds_;
   // Per lattice position, for the left (0) and right (1) goal foothold; filled by ComputeChainDistances().
   std::vector<double> chain_distance_[2];

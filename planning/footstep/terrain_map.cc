@@ -1,6 +1,7 @@
 #include <cairn/planning/footstep/terrain_map.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -23,6 +24,13 @@ TerrainMap::TerrainMap(const Eigen::Vector2d& origin, int cols, int rows, double
     throw std::invalid_argument(message.str());
   }
   if (!origin.allFinite()) throw std::invalid_argument("TerrainMap: the origin must be finite");
+  const std::int64_t cells = static_cast<std::int64_t>(cols) * rows;
+  if (cells > kMaxCells) {
+    std::ostringstream message;
+    message << "TerrainMap: " << cols << " x " << rows << " = " << cells << " cells are more than the " << kMaxCells
+            << " a map may hold (24 bytes each); coarsen the resolution or crop the map";
+    throw std::invalid_argument(message.str());
+  }
   const std::size_t n = static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows);
   height_.assign(n, std::numeric_limits<float>::quiet_NaN());
   normal_.assign(3 * n, 0.0f);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,12 @@ class TerrainMap {
     double yaw{0.0};
   };
 
+  /// Most cells a map may hold: 2^27 (3 GiB).
+  static constexpr std::int64_t kMaxCells = std::int64_t{1} << 27;
+
   /// A grid of `cols` x `rows` cells of side `resolution` (m) whose minimum corner is `origin` (m), every cell
-  /// without ground. Throws std::invalid_argument for a non-positive size or resolution.
+  /// without ground. Throws std::invalid_argument for a non-positive size or resolution, a non-finite origin, or
+  /// more than kMaxCells cells.
   TerrainMap(const Eigen::Vector2d& origin, int cols, int rows, double resolution);
 
   /// Puts ground in cell (col, row). `normal` must be a unit vector pointing up (z > 0); `friction` >= 0.

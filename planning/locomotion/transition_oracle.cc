@@ -8,12 +8,14 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <mutex>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <system_error>
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/atomic_file.h"
@@ -66,7 +68,7 @@ void ValidateAxis(const std::vector<double>& axis, const char* name, double lo, 
   for (std::size_t i = 0; i < axis.size(); ++i) {
     const double v = axis[i];
     if (!std::isfinite(v)) {
-      throw std::invalid_argument(std::string("OracleGrid: axis '") + name + "' value " + std::to_string(i) +
+      throw std::invalid_argument(std::string("OracleGrid: axis '") + name + "' value " + cairn::FormatShort(i) +
                                   " is not finite.");
     }
     if (i > 0 && !(v > axis[i - 1])) {
@@ -86,7 +88,7 @@ void ValidateAxis(const std::vector<double>& axis, const char* name, double lo, 
 }
 
 std::string AxisLine(const char* name, const std::vector<double>& axis) {
-  std::string line = std::string(name) + " " + std::to_string(axis.size());
+  std::string line = std::string(name) + " " + cairn::FormatShort(axis.size());
   for (double v : axis) line += " " + FormatExact(v);
   return line + "\n";
 }
@@ -148,9 +150,9 @@ TransitionOracle TransitionOracle::Build(const WalkingModel& model, WalkingObjec
   const std::size_t num_mu = grid.mu.size();
   const std::size_t total = grid.num_entries();
   if (cells > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-    throw std::invalid_argument("TransitionOracle::Build: the grid has " + std::to_string(cells) +
+    throw std::invalid_argument("TransitionOracle::Build: the grid has " + cairn::FormatShort(cells) +
                                 " step displacements, more than the " +
-                                std::to_string(std::numeric_limits<int>::max()) + " supported; use fewer axis values.");
+                                cairn::FormatShort(std::numeric_limits<int>::max()) + " supported; use fewer axis values.");
   }
   std::mutex progress_mutex;
   std::size_t done = 0;
@@ -397,10 +399,10 @@ TransitionCost TransitionOracle::DoEvaluate(const StepDisplacement& d, double mu
 
 std::string TransitionOracle::do_description() const {
   return "transition oracle for " + robot_name_ + ", objective " + to_string(objective_) + ", " +
-         std::to_string(entries_.size()) + " entries (" + std::to_string(num_feasible()) + " feasible) over " +
-         std::to_string(grid_.dx.size()) + " dx x " + std::to_string(grid_.dy.size()) + " dy x " +
-         std::to_string(grid_.dz.size()) + " dz x " + std::to_string(grid_.dtheta.size()) + " dtheta x " +
-         std::to_string(grid_.mu.size()) + " mu";
+         cairn::FormatShort(entries_.size()) + " entries (" + cairn::FormatShort(num_feasible()) + " feasible) over " +
+         cairn::FormatShort(grid_.dx.size()) + " dx x " + cairn::FormatShort(grid_.dy.size()) + " dy x " +
+         cairn::FormatShort(grid_.dz.size()) + " dz x " + cairn::FormatShort(grid_.dtheta.size()) + " dtheta x " +
+         cairn::FormatShort(grid_.mu.size()) + " mu";
 }
 
 std::string TransitionOracle::Serialize() const {
@@ -423,8 +425,8 @@ std::string TransitionOracle::Serialize() const {
   header += std::string("objective ") + to_string(objective_) + "\n";
   header += AxisLine("dx", grid_.dx) + AxisLine("dy", grid_.dy) + AxisLine("dz", grid_.dz) +
             AxisLine("dtheta", grid_.dtheta) + AxisLine("mu", grid_.mu);
-  header += "entries " + std::to_string(entries_.size()) + "\n";
-  header += "payload_bytes " + std::to_string(payload.size()) + "\n";
+  header += "entries " + cairn::FormatShort(entries_.size()) + "\n";
+  header += "payload_bytes " + cairn::FormatShort(payload.size()) + "\n";
   header += "checksum " + HashHex(Fnv1a64(payload)) + "\n";
   header += "end\n";
   return header + payload;
@@ -479,8 +481,8 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
       v = std::strtod(token.c_str(), nullptr);
     }
   }
-  if (stored != grid) fail("made for a different grid (" + std::to_string(stored.num_entries()) + " entries vs " +
-                           std::to_string(grid.num_entries()) + " requested, or different axis values).");
+  if (stored != grid) fail("made for a different grid (" + cairn::FormatShort(stored.num_entries()) + " entries vs " +
+                           cairn::FormatShort(grid.num_entries()) + " requested, or different axis values).");
   const std::size_t entries = std::strtoull(field("entries").c_str(), nullptr, 10);
   const std::size_t payload_bytes = std::strtoull(field("payload_bytes").c_str(), nullptr, 10);
   const std::string checksum = field("checksum");
@@ -489,8 +491,8 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
     fail("corrupt header: entry count or payload size does not match the grid.");
   }
   if (bytes.size() - position != payload_bytes) {
-    fail("corrupt: the payload has " + std::to_string(bytes.size() - position) + " bytes, the header says " +
-         std::to_string(payload_bytes) + ".");
+    fail("corrupt: the payload has " + cairn::FormatShort(bytes.size() - position) + " bytes, the header says " +
+         cairn::FormatShort(payload_bytes) + ".");
   }
   if (HashHex(Fnv1a64(std::string_view(bytes).substr(position, payload_bytes))) != checksum) {
     fail("corrupt: payload checksum mismatch.");
@@ -522,7 +524,8 @@ TransitionOracle TransitionOracle::LoadOrBuild(const std::string& path, const Wa
                                                const OracleBuildOptions& options, std::ostream* log) {
   grid.Validate(model.reach());
   std::string reason;
-  if (std::filesystem::exists(path)) {
+  std::error_code exists_error;
+  if (std::filesystem::exists(path, exists_error)) {
     try {
       TransitionOracle oracle = Load(path, model, objective, grid);
       if (log != nullptr) *log << "Loaded transition oracle " << path << " (" << oracle.num_entries() << " entries)\n";
@@ -540,7 +543,27 @@ TransitionOracle TransitionOracle::LoadOrBuild(const std::string& path, const Wa
     }
   }
   TransitionOracle oracle = Build(model, objective, grid, options);
-  oracle.Save(path);
+  // The cache is an optimisation: a folder that cannot be created or written costs the next run a rebuild, not
+  // this run its table.
+  std::string problem;
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::error_code folder_error;
+  if (!folder.empty()) std::filesystem::create_directories(folder, folder_error);
+  if (folder_error) {
+    problem = "cannot create the folder '" + folder.string() + "' (" + folder_error.message() + ")";
+  } else {
+    try {
+      oracle.Save(path);
+    } catch (const std::exception& error) {
+      problem = error.what();
+    }
+  }
+  if (!problem.empty()) {
+    std::ostream& warning = log != nullptr ? *log : std::cerr;
+    warning << "Warning: the transition oracle is not cached: " << problem
+            << "; continuing with the table in memory (it will be built again next time; choose a writable cache "
+               "folder to keep it)\n";
+  }
   return oracle;
 }
 

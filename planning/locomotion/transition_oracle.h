@@ -88,7 +88,9 @@ class TransitionOracle final : public StepCostModel {
                                const OracleGrid& grid);
 
   /// Load, or Build and Save when the file is missing, stale or corrupt; writes one line saying which (and
-  /// why it rebuilt) to `log` if not null.
+  /// why it rebuilt) to `log` if not null. Creates the file's folder when missing. When the folder cannot be
+  /// created or the file cannot be written, warns once (one line to `log`, or to std::cerr when `log` is null)
+  /// and returns the table it built: the cache is an optimisation, never a reason to fail.
   static TransitionOracle LoadOrBuild(const std::string& path, const WalkingModel& model, WalkingObjective objective,
                                       const OracleGrid& grid, const OracleBuildOptions& options,
                                       std::ostream* log);

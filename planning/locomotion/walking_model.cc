@@ -1,8 +1,8 @@
 #include "cairn/planning/locomotion/walking_model.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -13,6 +13,7 @@
 
 #include "cairn/common/hash.h"
 #include "cairn/common/internal/yaml_reader.h"
+#include "cairn/common/number_text.h"
 #include "cairn/common/text_suggestions.h"
 #include "cairn/multibody/center_of_mass.h"
 #include "cairn/multibody/configuration.h"
@@ -49,11 +50,7 @@ using cairn::internal::YamlReader;
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string Num(double x) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.6g", x);
-  return text;
-}
+std::string Num(double x) { return FormatShort(x); }
 
 std::string ReadFile(const std::string& path, const std::string& what) {
   std::ifstream in(path, std::ios::binary);
@@ -167,7 +164,16 @@ WalkingModel WalkingModel::Load(const std::string& yaml_path) {
                "parameters", "knee_flexion_deg", "swing_height", "body_box", "leg_torque_grid", "motors"});
 
   const std::string name = r.String(root, "", "name");
-  if (name.empty()) r.Fail("name", root["name"], "must not be empty.");
+  // The name becomes part of file names (the oracle cache) and of the oracle file's header lines.
+  constexpr std::size_t kMaxNameLength = 64;
+  const bool plain = std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-' || c == '.';
+  });
+  if (name.empty() || name.size() > kMaxNameLength || !plain || name[0] == '.') {
+    r.Fail("name", root["name"], "must be 1 to " + cairn::FormatShort(kMaxNameLength) +
+                                     " letters, digits, '_', '-' or '.' (not first), as it names cache files; got '" +
+                                     name.substr(0, kMaxNameLength) + (name.size() > kMaxNameLength ? "...'." : "'."));
+  }
   const std::filesystem::path urdf_relative = r.String(root, "", "urdf");
   const std::filesystem::path urdf =
       urdf_relative.is_absolute() ? urdf_relative : std::filesystem::path(yaml_path).parent_path() / urdf_relative;
@@ -394,7 +400,7 @@ double WalkingModel::body_box_bottom() const { return impl_->body_box_bottom; }
 const LegGeometry& WalkingModel::leg() const { return impl_->leg; }
 const MotorConstants& WalkingModel::motor(int i) const {
   if (i < 0 || i >= kLegJoints) {
-    throw std::out_of_range("WalkingModel::motor: leg joint " + std::to_string(i) + " is not in [0, 5].");
+    throw std::out_of_range("WalkingModel::motor: leg joint " + cairn::FormatShort(i) + " is not in [0, 5].");
   }
   return impl_->motors[static_cast<std::size_t>(i)];
 }

@@ -56,7 +56,7 @@ class WalkingModel {
   /// std::runtime_error for a URDF that cannot be read or whose legs do not fit the keys.
   static WalkingModel Load(const std::string& yaml_path);
 
-  /// Robot name (the YAML's `name`).
+  /// Robot name (the YAML's `name`: 1 to 64 letters, digits, '_', '-' or '.', since it names cache files).
   const std::string& name() const;
   /// Total mass from the multibody model, kg.
   double mass() const;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <chrono>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -34,7 +36,32 @@ class FootstepScenario {
     bool Contains(const Eigen::Vector2d& p) const;
   };
 
-  /// Reads and validates a scenario; throws std::invalid_argument naming the file, the line and the key.
+  /// What a scenario file may state, checked before anything is built from it: regions (1000) and obstacles
+  /// (1000: every candidate step is checked against each obstacle, and the heuristic's precomputation against
+  /// each for every lattice link), polygon vertices (1000), heights of ground and obstacles (+-100 m), horizontal
+  /// coordinates (+-1e4 m), the planner's time limit (1e6 s) and its epsilons (100). Friction coefficients lie
+  /// in (0, perception::kMaxFrictionCoefficient] (perception::CheckPhysicalFriction() for distributions).
+  static constexpr std::size_t kMaxRegions = 1000;
+  /// See kMaxRegions.
+  static constexpr std::size_t kMaxObstacles = 1000;
+  /// See kMaxRegions.
+  static constexpr std::size_t kMaxPolygonVertices = 1000;
+  /// See kMaxRegions.
+  static constexpr double kMaxHeight = 100.0;
+  /// See kMaxRegions.
+  static constexpr double kMaxCoordinate = 1e4;
+  /// See kMaxRegions.
+  static constexpr double kMaxTimeLimit = 1e6;
+  /// See kMaxRegions.
+  static constexpr double kMaxEpsilon = 100.0;
+  /// Largest scenario file (2 MiB), refused from its size before it is parsed: the count limits above admit
+  /// files of a few hundred kilobytes (1000 box regions and 1000 obstacles take about 100 KB), and parsing takes
+  /// time and memory in proportion to the file (4 MB of obstacles took 3 s and 590 MB before they were counted).
+  static constexpr std::size_t kMaxFileBytes = 2u << 20;
+
+  /// Reads and validates a scenario; throws std::invalid_argument naming the file, the line and the key for a
+  /// missing, unknown, mistyped or out-of-range value (the limits above, NaN or infinity anywhere), a region
+  /// wholly outside the terrain, or a start or goal stance that cannot stand (StanceGeometryProblem()).
   static FootstepScenario Load(const std::string& path);
 
   const std::string& path() const { return path_; }
@@ -53,8 +80,11 @@ class FootstepScenario {
   void set_objective(const std::string& objective) { objective_ = objective; }
 
   /// Rasterises the regions (later regions paint over earlier ones) and obstacles. A cell's friction is the
-  /// (1 - eta) quantile of its region's distribution, the chance constraint of thesis eq. 5.3.
-  TerrainMap BuildTerrain() const;
+  /// (1 - eta) quantile of its region's distribution, the chance constraint of thesis eq. 5.3. Throws
+  /// TimeLimitReached (naming the file and how far it got) if the work is still running at `deadline`, so that
+  /// a planning time limit can cover the set-up before the search too.
+  TerrainMap BuildTerrain(
+      std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max()) const;
 
  private:
   std::string path_;

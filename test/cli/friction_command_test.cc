@@ -1,5 +1,6 @@
 // Runs `cairn friction-dataset` and `cairn friction` as a user would.
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -70,6 +71,20 @@ TEST_F(FrictionCommandTest, BadInputsExitWithOneAndSayWhy) {
   run = RunCairn("friction --image " + image_);
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.output, HasSubstr("--out is required"));
+}
+
+TEST_F(FrictionCommandTest, AnImageTooLargeIsRefusedFromItsHeader) {
+  // 33 bytes of PNG whose header claims 30000 x 30000 grey pixels (900 MB decoded): refused before decoding.
+  const unsigned char header[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                  0, 0, 0x75, 0x30, 0, 0, 0x75, 0x30, 8, 0, 0, 0, 0, 0, 0, 0, 0};
+  const fs::path huge = dir_ / "huge.png";
+  std::ofstream(huge, std::ios::binary).write(reinterpret_cast<const char*>(header), sizeof(header));
+  const CairnRun run = RunCairn("friction --image " + huge.string() + " --out " + (dir_ / "out").string());
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("image '" + huge.string() + "' is 30000 x 30000 = 900000000 pixels, more than "
+                                    "the limit of 67108864 pixels; downscale or crop it"));
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
 }  // namespace

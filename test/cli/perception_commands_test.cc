@@ -9,6 +9,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "run_cairn.h"
 
@@ -73,6 +75,35 @@ TEST(PerceptionCommandsTest, StereoEvalBadInputExitsWithOneAndSaysWhy) {
   EXPECT_THAT(usage.output, HasSubstr("--right is required"));
 }
 
+TEST(PerceptionCommandsTest, StereoEvalReadsSixteenBitGroundTruthAndDefaultsOnlyAbsentOptions) {
+  // Venus' ground truth in the KITTI layout: 16 bits, 256 per pixel of disparity (the file's 8 per pixel x 32).
+  const cv::Mat eight = cv::imread(Venus("disp2.png"), cv::IMREAD_GRAYSCALE);
+  ASSERT_FALSE(eight.empty());
+  cv::Mat sixteen;
+  eight.convertTo(sixteen, CV_16U, 32.0);
+  const std::string kitti = ::testing::TempDir() + "/perception_commands_disp2_16bit.png";
+  ASSERT_TRUE(cv::imwrite(kitti, sixteen));
+  const std::string pair = "stereo-eval --left " + Venus("im2.png") + " --right " + Venus("im6.png") + " --gt ";
+  // Neither --gt-scale nor --dmax: the file's own scale, and the range from its largest disparity (19.75 px).
+  const CairnRun automatic = RunCairn(pair + kitti + " --json");
+  ASSERT_EQ(automatic.exit_code, 0) << automatic.output;
+  EXPECT_THAT(automatic.output, HasSubstr("\"max_disparity\": 31,"));
+  EXPECT_THAT(automatic.output, HasSubstr("\"bad_pixel_rate\": 0.0"));
+  // An 8-bit file has no standard scale: the command asks for it.
+  const CairnRun eight_bit = RunCairn(pair + Venus("disp2.png"));
+  EXPECT_EQ(eight_bit.exit_code, 2) << eight_bit.output;
+  EXPECT_THAT(eight_bit.output, HasSubstr("--gt-scale is needed: the ground truth '" + Venus("disp2.png") +
+                                          "' is 8-bit"));
+  // A --dmax given is used, whatever its value: 0 is no request for the automatic range (and covers no pixel).
+  const CairnRun zero = RunCairn(pair + kitti + " --dmax 0");
+  EXPECT_EQ(zero.exit_code, 1) << zero.output;
+  EXPECT_THAT(zero.output, HasSubstr("no pixel could be evaluated"));
+  const CairnRun negative = RunCairn(pair + kitti + " --dmax -1");
+  EXPECT_EQ(negative.exit_code, 2) << negative.output;
+  EXPECT_THAT(negative.output, HasSubstr("--dmax '-1' is out of range; give an integer from 0 to 4095"));
+  std::remove(kitti.c_str());
+}
+
 TEST(PerceptionCommandsTest, OccupancyPrintsPrecisionAndRecallPerFrame) {
   const CairnRun text = RunCairn("occupancy --scenario bars --model merrell --frames 2");
   ASSERT_EQ(text.exit_code, 0) << text.output;
@@ -98,7 +129,11 @@ TEST(PerceptionCommandsTest, OccupancyBadInputExitsWithOneOrTwo) {
   EXPECT_THAT(scenario.output, HasSubstr("--scenario '/no/such.yaml' does not exist"));
   const CairnRun frames = RunCairn("occupancy --frames 0");
   EXPECT_EQ(frames.exit_code, 2);
-  EXPECT_THAT(frames.output, HasSubstr("--frames '0' is out of range; give an integer from 1 to 1000"));
+  EXPECT_THAT(frames.output, HasSubstr("--frames '0' is out of range; give an integer from 1 to 10000"));
+  // The scenarios' own limit (OccupancyScenario::kMaxFrames), one for the option and the files.
+  const CairnRun many = RunCairn("occupancy --frames 10001");
+  EXPECT_EQ(many.exit_code, 2);
+  EXPECT_THAT(many.output, HasSubstr("--frames '10001' is out of range; give an integer from 1 to 10000"));
   const CairnRun flag = RunCairn("occupancy --bogus");
   EXPECT_EQ(flag.exit_code, 2);
   EXPECT_THAT(flag.output, HasSubstr("--bogus"));
@@ -123,6 +158,16 @@ TEST(PerceptionCommandsTest, OccupancyRunsAYamlScenario) {
   const CairnRun too_many = RunCairn("occupancy --scenario " + BoxesOnFloor() + " --frames 11");
   EXPECT_EQ(too_many.exit_code, 1);
   EXPECT_THAT(too_many.output, HasSubstr("has 10 frames"));
+}
+
+TEST(PerceptionCommandsTest, OccupancyRefusesAScenarioFileLargerThanTwoMebibytesBeforeParsingIt) {
+  const std::string path = ::testing::TempDir() + "/perception_commands_padded.yaml";
+  std::ofstream(path) << "# " << std::string(2u << 20, 'x') << "\n";
+  const CairnRun run = RunCairn("occupancy --scenario " + path);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.output, HasSubstr("Cannot read '" + path + "': it has 2097155 bytes, more than the 2097152 a file "
+                                    "of its kind may have."));
+  std::remove(path.c_str());
 }
 
 TEST(PerceptionCommandsTest, OccupancyReportsTheKeyAndLineOfAMalformedScenario) {

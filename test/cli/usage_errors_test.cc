@@ -2,6 +2,7 @@
 // option, the value given and what to give instead. (Failures are exit 1; see output_files_test.cc.)
 
 #include <cctype>
+#include <filesystem>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -60,7 +61,7 @@ std::vector<NumericOption> AllNumericOptions() {
       {stereo + " --gt-scale 8", "--border", "an integer from 0 to 10000"},
       {"occupancy", "--noise-var", "a number from 0 to 65025"},
       {"occupancy", "--peak-ratio", "a number from 0 to 100"},
-      {"occupancy", "--frames", "an integer from 1 to 1000"},
+      {"occupancy", "--frames", "an integer from 1 to 10000"},
       {"occupancy", "--window", "an odd integer from 1 to 2051"},
       {"friction --image i.png --out o", "--eta", "a number from 1e-06 to 0.999999"},
       {train, "--images", "an integer from 2 to 100000"},
@@ -127,6 +128,23 @@ TEST(UsageErrorsTest, PendulumRefusesStepCountsThatWouldHangOrExhaustMemory) {
 TEST(UsageErrorsTest, FrictionTrainRefusesMoreTrainingPixelsThanItCanHold) {
   ExpectUsageError("friction-train --out m.yaml --images 1000 --width 4096 --height 4096",
                    "more than the limit of 268435456; use fewer or smaller images");
+}
+
+TEST(UsageErrorsTest, SeedsThatWouldWrapPastTwoToThe32AreRefused) {
+  // Scene i uses seed + i: 4294967295 + 1 wrapped round to seed 0.
+  ExpectUsageError("friction-dataset --out data --seed 4294967295 --images 2",
+                   "--seed 4294967295 with --images 2 would use seeds up to 4294967296, past 4294967295; give "
+                   "--seed at most 4294967294");
+  // Test scenes start 1000000 after the seed.
+  ExpectUsageError("friction-train --out model.yaml --seed 4294000000",
+                   "--seed 4294000000 with --test-images 40 would use seeds up to 4295000039 (test scenes start "
+                   "1000000 after the seed), past 4294967295; give --seed at most 4293967256");
+  // The largest seed that fits is used.
+  const std::string out = ::testing::TempDir() + "/usage_errors_last_seed";
+  const CairnStreams last = RunCairnStreams("friction-dataset --out " + out +
+                                            " --seed 4294967294 --images 2 --width 16 --height 16");
+  EXPECT_EQ(last.exit_code, 0) << last.err;
+  std::filesystem::remove_all(out);
 }
 
 TEST(UsageErrorsTest, EveryChoiceOptionListsTheChoicesAndSuggestsTheClosest) {

@@ -116,6 +116,13 @@ TEST(YamlReaderTest, UnreadableMalformedOrNonMappingFiles) {
   const std::string path = ::testing::TempDir() + "/yaml_reader_test.yaml";
   std::ofstream(path) << "a: 1\n";
   EXPECT_EQ(YamlReader(path).Integer(YamlReader(path).root(), "a", "the file", 0, 9), 1);
+  // A caller's size limit is checked from the file's size, before it is read; the default is kMaxFileBytes.
+  EXPECT_EQ(YamlReader(path, 5).Integer(YamlReader(path, 5).root(), "a", "the file", 0, 9), 1);
+  CAIRN_EXPECT_THROWS_WITH(YamlReader(path, 4), std::invalid_argument,
+                           "Cannot read '" + path + "': it has 5 bytes, more than the 4 a file of its kind may have.");
+  CAIRN_EXPECT_THROWS_WITH(YamlReader(path, 0), std::invalid_argument, "size limit 0", "must be in [1, 268435456]");
+  CAIRN_EXPECT_THROWS_WITH(YamlReader(path, YamlReader::kMaxFileBytes + 1), std::invalid_argument,
+                           "size limit 268435457");
   std::filesystem::remove(path);
   // A long value is quoted short in messages.
   const std::string long_list = "v: [" + std::string(200, '1') + "]\n";

@@ -3,6 +3,8 @@
 #include <cstring>
 #include <vector>
 
+#include "cairn/common/number_text.h"
+
 namespace cairn::python {
 namespace {
 
@@ -34,13 +36,13 @@ py::dtype DtypeOfDepth(int depth) {
     case CV_64F: return py::dtype::of<double>();
     default: break;
   }
-  throw py::value_error("cairn: images of OpenCV depth " + std::to_string(depth) +
+  throw py::value_error("cairn: images of OpenCV depth " + cairn::FormatShort(depth) +
                         " (16-bit float) have no numpy equivalent here; convert them to float32 in C++");
 }
 
 py::array MatToArray(const cv::Mat& image, bool writable) {
   if (image.dims > 2) {
-    throw py::value_error("cairn: a cv::Mat with " + std::to_string(image.dims) +
+    throw py::value_error("cairn: a cv::Mat with " + cairn::FormatShort(image.dims) +
                           " dimensions cannot become an image array (2 dimensions and channels expected)");
   }
   const py::dtype dtype = DtypeOfDepth(image.depth());
@@ -77,16 +79,16 @@ cv::Mat ArrayToMat(py::handle object, const std::string& what) {
                           " is not an image type; use uint8, int8, uint16, int16, int32, float32 or float64");
   }
   if (array.ndim() != 2 && array.ndim() != 3) {
-    throw py::value_error(what + ": expected an H x W or H x W x C array, got " + std::to_string(array.ndim()) +
+    throw py::value_error(what + ": expected an H x W or H x W x C array, got " + cairn::FormatShort(array.ndim()) +
                           " dimensions");
   }
   const py::ssize_t channels = array.ndim() == 3 ? array.shape(2) : 1;
   if (channels < 1 || channels > CV_CN_MAX) {
-    throw py::value_error(what + ": " + std::to_string(channels) + " channels; OpenCV images have 1 to " +
-                          std::to_string(CV_CN_MAX));
+    throw py::value_error(what + ": " + cairn::FormatShort(channels) + " channels; OpenCV images have 1 to " +
+                          cairn::FormatShort(CV_CN_MAX));
   }
   if (array.shape(0) > INT32_MAX || array.shape(1) > INT32_MAX) {
-    throw py::value_error(what + ": " + std::to_string(array.shape(0)) + " x " + std::to_string(array.shape(1)) +
+    throw py::value_error(what + ": " + cairn::FormatShort(array.shape(0)) + " x " + cairn::FormatShort(array.shape(1)) +
                           " pixels exceed OpenCV's limit of 2^31 - 1 per side");
   }
   const int type = CV_MAKETYPE(depth, static_cast<int>(channels));

@@ -17,6 +17,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "cairn/common/number_text.h"
 #include "cairn/multibody/body.h"
 #include "cairn/multibody/center_of_mass.h"
 #include "cairn/multibody/collision_world.h"
@@ -64,8 +65,8 @@ int FrameIndex(const Model& model, py::handle frame) {
   if (py::isinstance<py::str>(frame)) return model.GetFrameIndex(frame.cast<std::string>());
   const int index = frame.cast<int>();
   if (index < 0 || index >= model.num_frames()) {
-    throw py::index_error("frame " + std::to_string(index) + " is out of range [0, " +
-                          std::to_string(model.num_frames()) + ")");
+    throw py::index_error("frame " + cairn::FormatShort(index) + " is out of range [0, " +
+                          cairn::FormatShort(model.num_frames()) + ")");
   }
   return index;
 }

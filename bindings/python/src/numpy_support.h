@@ -14,6 +14,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include "cairn/common/number_text.h"
+
 namespace cairn::python {
 
 namespace py = pybind11;
@@ -67,7 +69,7 @@ std::vector<Vector> UnstackRows(const py::array_t<typename Vector::Scalar, py::a
                                 const std::string& what) {
   constexpr int columns = Vector::RowsAtCompileTime;
   if (array.ndim() != 2 || array.shape(1) != columns) {
-    throw py::value_error(what + ": expected an (n, " + std::to_string(columns) + ") array");
+    throw py::value_error(what + ": expected an (n, " + cairn::FormatShort(columns) + ") array");
   }
   auto view = array.template unchecked<2>();
   std::vector<Vector> rows(static_cast<std::size_t>(array.shape(0)));

@@ -15,6 +15,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "cairn/common/number_text.h"
 #include "cairn/optimization/binding.h"
 #include "cairn/optimization/bounding_box_constraint.h"
 #include "cairn/optimization/check_gradients.h"
@@ -67,8 +68,8 @@ Eigen::VectorXd ValuesFromPython(const py::object& result, Eigen::Index size, co
     values = result.cast<Eigen::VectorXd>();
   }
   if (values.size() != size) {
-    throw std::invalid_argument(what + " returned " + std::to_string(values.size()) + " values, expected " +
-                                std::to_string(size));
+    throw std::invalid_argument(what + " returned " + cairn::FormatShort(values.size()) + " values, expected " +
+                                cairn::FormatShort(size));
   }
   return values;
 }
@@ -81,9 +82,9 @@ void PatternValuesFromPython(const py::object& result, const std::vector<Sparsit
   if (!array) throw std::invalid_argument(what + " must return an array");
   if (array.ndim() == 1) {
     if (array.shape(0) != static_cast<py::ssize_t>(pattern.size())) {
-      throw std::invalid_argument(what + " returned " + std::to_string(array.shape(0)) +
-                                  " values, expected one per pattern entry (" + std::to_string(pattern.size()) +
-                                  ") or a " + std::to_string(rows) + " x " + std::to_string(cols) + " matrix");
+      throw std::invalid_argument(what + " returned " + cairn::FormatShort(array.shape(0)) +
+                                  " values, expected one per pattern entry (" + cairn::FormatShort(pattern.size()) +
+                                  ") or a " + cairn::FormatShort(rows) + " x " + cairn::FormatShort(cols) + " matrix");
     }
     auto view = array.unchecked<1>();
     for (std::size_t k = 0; k < pattern.size(); ++k) values[static_cast<Eigen::Index>(k)] = view(static_cast<py::ssize_t>(k));
@@ -91,7 +92,7 @@ void PatternValuesFromPython(const py::object& result, const std::vector<Sparsit
   }
   if (array.ndim() != 2 || array.shape(0) != rows || array.shape(1) != cols) {
     throw std::invalid_argument(what + " returned an array of shape " + std::string(py::str(array.attr("shape"))) +
-                                ", expected (" + std::to_string(rows) + ", " + std::to_string(cols) + ")");
+                                ", expected (" + cairn::FormatShort(rows) + ", " + cairn::FormatShort(cols) + ")");
   }
   auto view = array.unchecked<2>();
   for (std::size_t k = 0; k < pattern.size(); ++k) values[static_cast<Eigen::Index>(k)] = view(pattern[k].row, pattern[k].col);
@@ -301,8 +302,8 @@ void DefineOptimization(py::module_ m) {
       .def_static("DensePattern", [](int rows, int cols) { return PatternToPython(Evaluator::DensePattern(rows, cols)); },
                   py::arg("rows"), py::arg("cols"), "The dense pattern of a rows x cols Jacobian, row-major.")
       .def("__repr__", [](const Evaluator& self) {
-        return "<Evaluator '" + self.name() + "' " + std::to_string(self.num_inputs()) + " -> " +
-               std::to_string(self.num_outputs()) + ">";
+        return "<Evaluator '" + self.name() + "' " + cairn::FormatShort(self.num_inputs()) + " -> " +
+               cairn::FormatShort(self.num_outputs()) + ">";
       }, "<Evaluator 'name' n -> m>.");
 
   py::class_<FunctionEvaluator, Evaluator, std::shared_ptr<FunctionEvaluator>>(
@@ -542,7 +543,7 @@ void DefineOptimization(py::module_ m) {
       .def(py::pickle(&ResultState, &ResultFromState), "Pickles every field.")
       .def("__repr__", [](const SolverResult& r) {
         return "<SolverResult " + r.solver_name + ": " + to_string(r.status) + ", objective " +
-               std::to_string(r.objective) + ">";
+               cairn::FormatShort(r.objective) + ">";
       }, "<SolverResult solver: status, objective ...>.");
 
   py::class_<Solver>(m, "Solver",

@@ -14,6 +14,7 @@
 
 #include "abstract_values.h"
 #include "bindings.h"
+#include "cairn/common/number_text.h"
 #include "cairn/perception/friction/builtin_material_segmenter.h"
 #include "cairn/perception/friction/contact_observation.h"
 #include "cairn/perception/friction/friction_distribution.h"
@@ -63,7 +64,7 @@ cv::Mat OutputImage(const py::array& out, const cv::Mat& probabilities) {
   if (!py::isinstance<py::array_t<float>>(out) || out.ndim() != 2 || out.shape(0) != probabilities.rows ||
       out.shape(1) != probabilities.cols || !(out.flags() & py::array::c_style) || !out.writeable()) {
     throw py::value_error("FrictionQuantileImage.Compute: `out` must be a writable C-contiguous float32 array of "
-                          "shape (" + std::to_string(probabilities.rows) + ", " + std::to_string(probabilities.cols) +
+                          "shape (" + cairn::FormatShort(probabilities.rows) + ", " + cairn::FormatShort(probabilities.cols) +
                           ")");
   }
   return cv::Mat(probabilities.rows, probabilities.cols, CV_32F, const_cast<void*>(out.data()));

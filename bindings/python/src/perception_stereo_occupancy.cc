@@ -15,6 +15,7 @@
 
 #include "abstract_values.h"
 #include "bindings.h"
+#include "cairn/common/number_text.h"
 #include "cairn/perception/occupancy/confidence_to_occupancy.h"
 #include "cairn/perception/occupancy/cost_curve_sensor_model.h"
 #include "cairn/perception/occupancy/occupancy_grid.h"
@@ -92,8 +93,8 @@ DisparityVolume VolumeFromArray(const py::array_t<float, py::array::forcecast | 
 
 std::size_t CheckCellIndex(const OccupancyGrid& grid, long long index) {
   if (index < 0 || static_cast<std::size_t>(index) >= grid.num_cells()) {
-    throw py::index_error("cell index " + std::to_string(index) + " is out of range [0, " +
-                          std::to_string(grid.num_cells()) + ")");
+    throw py::index_error("cell index " + cairn::FormatShort(index) + " is out of range [0, " +
+                          cairn::FormatShort(grid.num_cells()) + ")");
   }
   return static_cast<std::size_t>(index);
 }
@@ -101,9 +102,9 @@ std::size_t CheckCellIndex(const OccupancyGrid& grid, long long index) {
 void CheckCell(const OccupancyGrid& grid, const Eigen::Vector3i& cell) {
   for (int i = 0; i < 3; ++i) {
     if (cell[i] < 0 || cell[i] >= grid.dims()[i]) {
-      throw py::index_error("cell (" + std::to_string(cell.x()) + ", " + std::to_string(cell.y()) + ", " +
-                            std::to_string(cell.z()) + ") is outside the grid's " + std::to_string(grid.dims().x()) +
-                            " x " + std::to_string(grid.dims().y()) + " x " + std::to_string(grid.dims().z()) +
+      throw py::index_error("cell (" + cairn::FormatShort(cell.x()) + ", " + cairn::FormatShort(cell.y()) + ", " +
+                            cairn::FormatShort(cell.z()) + ") is outside the grid's " + cairn::FormatShort(grid.dims().x()) +
+                            " x " + cairn::FormatShort(grid.dims().y()) + " x " + cairn::FormatShort(grid.dims().z()) +
                             " cells");
     }
   }
@@ -155,8 +156,10 @@ void DefinePerceptionStereoOccupancy(py::module_ m) {
       .def_readwrite("prefilter_size", &CostVolumeOptions::prefilter_size, "Sobel aperture 3, 5, 7 or 9.")
       .def_readwrite("prefilter_cap", &CostVolumeOptions::prefilter_cap, "Clip 1..63.")
       .def_readwrite("num_threads", &CostVolumeOptions::num_threads, "Threads (0: one per core).")
-      .def("Validate", &CostVolumeOptions::Validate, py::arg("image_width"),
-           "ValueError naming a bad value for this width.");
+      .def("Validate", &CostVolumeOptions::Validate,
+           py::arg("image_width") = CostVolumeOptions::kUnknownImageSize,
+           py::arg("image_height") = CostVolumeOptions::kUnknownImageSize,
+           "ValueError naming a bad value for this image size (-1: a side not known yet).");
 
   py::class_<DisparityVolume>(m, "DisparityVolume",
                               "An H x W x D array of float32 (a cost or confidence curve per pixel over "
@@ -175,8 +178,8 @@ void DefinePerceptionStereoOccupancy(py::module_ m) {
           "at",
           [](const DisparityVolume& v, int y, int x, int k) {
             if (y < 0 || y >= v.height() || x < 0 || x >= v.width() || k < 0 || k >= v.num_disparities()) {
-              throw py::index_error("DisparityVolume.at: (" + std::to_string(y) + ", " + std::to_string(x) + ", " +
-                                    std::to_string(k) + ") is outside the volume");
+              throw py::index_error("DisparityVolume.at: (" + cairn::FormatShort(y) + ", " + cairn::FormatShort(x) + ", " +
+                                    cairn::FormatShort(k) + ") is outside the volume");
             }
             return v.at(y, x, k);
           },

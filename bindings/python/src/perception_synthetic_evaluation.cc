@@ -129,8 +129,10 @@ void DefinePerceptionSyntheticEvaluation(py::module_ m) {
   // Evaluation
 
   m.def("LoadGrayImage", &LoadGrayImage, py::arg("path"), "Reads an image as uint8 grey; RuntimeError naming it.");
-  m.def("LoadDisparityImage", &LoadDisparityImage, py::arg("path"), py::arg("scale"),
-        "A ground-truth disparity PNG divided by `scale` (float32, 0 = unknown).");
+  m.def("LoadDisparityImage", py::overload_cast<const std::string&, double>(&LoadDisparityImage), py::arg("path"),
+        py::arg("scale"), "A ground-truth disparity PNG (8- or 16-bit) divided by `scale` (float32, 0 = unknown).");
+  m.def("LoadDisparityImage", py::overload_cast<const std::string&>(&LoadDisparityImage), py::arg("path"),
+        "A 16-bit ground-truth disparity PNG at the KITTI scale (256 per pixel); an 8-bit file needs a scale.");
   m.def("OcclusionFromGroundTruth", &OcclusionFromGroundTruth, py::arg("left_disparity"), py::arg("right_disparity"),
         py::arg("tolerance") = 1.0, "uint8 occlusion mask (255 = occluded) from two ground truths.");
   py::class_<MiddleburyPair>(m, "MiddleburyPair", "A Middlebury-2001-style pair with ground truth.")

@@ -1,6 +1,7 @@
 // cairn.planning: footstep scenarios and terrain, the walking model and its transition oracle, PlanFootsteps and
 // the FootstepPlanner system. Plans and their parts are plain value classes (picklable, with to_dict()).
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "abstract_values.h"
 #include "bindings.h"
 #include "system_support.h"
+#include "cairn/common/number_text.h"
 #include "cairn/planning/footstep/ara_star.h"
 #include "cairn/planning/footstep/biped_geometry.h"
 #include "cairn/planning/footstep/foot_pose.h"
@@ -103,8 +105,8 @@ py::array_t<double> CellArray(const TerrainMap& terrain, Array value) {
 
 void CheckTerrainCell(const TerrainMap& terrain, int col, int row) {
   if (col < 0 || col >= terrain.cols() || row < 0 || row >= terrain.rows()) {
-    throw py::index_error("cell (" + std::to_string(col) + ", " + std::to_string(row) + ") is outside the " +
-                          std::to_string(terrain.cols()) + " x " + std::to_string(terrain.rows()) + " terrain");
+    throw py::index_error("cell (" + cairn::FormatShort(col) + ", " + cairn::FormatShort(row) + ") is outside the " +
+                          cairn::FormatShort(terrain.cols()) + " x " + cairn::FormatShort(terrain.rows()) + " terrain");
   }
 }
 
@@ -133,8 +135,8 @@ void DefinePlanning(py::module_ m) {
                       }),
            "Pickles the four values.")
       .def("__repr__", [](const FootPose& p) {
-        return "FootPose(x=" + std::to_string(p.x) + ", y=" + std::to_string(p.y) + ", z=" + std::to_string(p.z) +
-               ", theta=" + std::to_string(p.theta) + ")";
+        return "FootPose(x=" + cairn::FormatShort(p.x) + ", y=" + cairn::FormatShort(p.y) + ", z=" + cairn::FormatShort(p.z) +
+               ", theta=" + cairn::FormatShort(p.theta) + ")";
       }, "FootPose(x=..., y=..., z=..., theta=...).");
 
   py::class_<Stance>(m, "Stance", "Two feet on the ground (picklable).")
@@ -591,7 +593,26 @@ void DefinePlanning(py::module_ m) {
           "set_planner",
           [](FootstepScenario& self, const FootstepPlannerOptions& options) { self.mutable_planner() = options; },
           py::arg("options"), "Replaces the planner settings.")
-      .def("BuildTerrain", &FootstepScenario::BuildTerrain, "Rasterises regions and obstacles into a TerrainMap.");
+      .def(
+          "BuildTerrain",
+          [](const FootstepScenario& self, std::optional<double> time_limit) {
+            auto deadline = std::chrono::steady_clock::time_point::max();
+            if (time_limit) {
+              // Bounded so that now + limit cannot overflow the clock (a day is far more than any rasterisation).
+              if (!(*time_limit > 0.0) || !(*time_limit <= 86400.0)) {
+                throw std::invalid_argument("BuildTerrain: time_limit " + cairn::FormatShort(*time_limit) +
+                                            " s must be in (0, 86400]; pass None for no limit");
+              }
+              deadline = std::chrono::steady_clock::now() +
+                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(*time_limit));
+            }
+            py::gil_scoped_release release;
+            return self.BuildTerrain(deadline);
+          },
+          py::arg("time_limit") = py::none(),
+          "Rasterises regions and obstacles into a TerrainMap; with `time_limit` (seconds) RuntimeError "
+          "(TimeLimitReached) naming how far it got if it is still running then.");
 
   RegisterBoundAbstractValueType<TerrainMap>("TerrainMap");
   RegisterBoundAbstractValueType<Stance>("Stance");

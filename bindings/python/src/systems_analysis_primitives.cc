@@ -12,6 +12,7 @@
 
 #include "abstract_values.h"
 #include "bindings.h"
+#include "cairn/common/number_text.h"
 #include "cairn/systems/analysis/explicit_euler_integrator.h"
 #include "cairn/systems/analysis/integrator_base.h"
 #include "cairn/systems/analysis/runge_kutta45_integrator.h"
@@ -183,8 +184,8 @@ void DefineSystemsAnalysisAndPrimitives(py::module_ m) {
                    auto result = y.cast<Eigen::VectorXd>();
                    if (result.size() != output_size) {
                      throw std::logic_error("FunctionSystem: the function returned a vector of size " +
-                                            std::to_string(result.size()) + ", expected " +
-                                            std::to_string(output_size));
+                                            cairn::FormatShort(result.size()) + ", expected " +
+                                            cairn::FormatShort(output_size));
                    }
                    return result;
                  });

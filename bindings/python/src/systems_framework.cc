@@ -14,6 +14,7 @@
 
 #include "abstract_values.h"
 #include "bindings.h"
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/context.h"
 #include "cairn/systems/framework/dependency_ticket.h"
 #include "cairn/systems/framework/diagram.h"
@@ -71,7 +72,7 @@ std::unique_ptr<AbstractValue> InputValueFromPython(const InputPort& port, py::h
     try {
       vector = object.cast<Eigen::VectorXd>();
     } catch (const py::cast_error&) {
-      throw py::type_error(port.GetFullDescription() + " takes a vector of size " + std::to_string(port.size()) +
+      throw py::type_error(port.GetFullDescription() + " takes a vector of size " + cairn::FormatShort(port.size()) +
                            "; a " + std::string(py::str(py::type::handle_of(object).attr("__name__"))) +
                            " cannot be converted to one");
     }
@@ -114,7 +115,7 @@ void NamePythonSystem(const DiagramBuilder& builder, py::handle object, System* 
   std::set<std::string> taken;
   for (const System* existing : builder.GetSystems()) taken.insert(existing->get_name());
   std::string name = base;
-  for (int k = 2; taken.count(name) != 0; ++k) name = base + "_" + std::to_string(k);
+  for (int k = 2; taken.count(name) != 0; ++k) name = base + "_" + cairn::FormatShort(k);
   system->set_name(name);
 }
 
@@ -152,8 +153,8 @@ py::list WrapSystems(const std::vector<const System*>& systems, py::handle owner
 template <typename Index>
 void CheckIndex(Index index, Index count, const char* what) {
   if (index < 0 || index >= count) {
-    throw py::index_error(std::string(what) + " " + std::to_string(index) + " is out of range [0, " +
-                          std::to_string(count) + ")");
+    throw py::index_error(std::string(what) + " " + cairn::FormatShort(index) + " is out of range [0, " +
+                          cairn::FormatShort(count) + ")");
   }
 }
 
@@ -175,7 +176,7 @@ void DefineSystemsFramework(py::module_ m) {
       .def("is_valid", &DependencyTicket::is_valid, "False for a default-constructed ticket.")
       .def("__eq__", [](DependencyTicket a, DependencyTicket b) { return a == b; }, "Same ticket.")
       .def("__hash__", [](DependencyTicket t) { return t.index(); }, "Hash of the index.")
-      .def("__repr__", [](DependencyTicket t) { return "DependencyTicket(" + std::to_string(t.index()) + ")"; },
+      .def("__repr__", [](DependencyTicket t) { return "DependencyTicket(" + cairn::FormatShort(t.index()) + ")"; },
            "DependencyTicket(<index>).");
 
   py::enum_<PortDataType>(m, "PortDataType",
@@ -278,7 +279,7 @@ void DefineSystemsFramework(py::module_ m) {
           [](State& self, int index, py::handle value) {
             CheckIndex(index, self.num_abstract_states(), "abstract state");
             AssignAbstractValueFromPython(value, &self.get_mutable_abstract_state_value(index),
-                                          "abstract state " + std::to_string(index));
+                                          "abstract state " + cairn::FormatShort(index));
           },
           py::arg("index"), py::arg("value"), "Sets abstract state `index` (converted to its type).");
 
@@ -337,7 +338,7 @@ void DefineSystemsFramework(py::module_ m) {
           [](Context& self, int index, py::handle value) {
             CheckIndex(index, self.num_abstract_states(), "abstract state");
             AssignAbstractValueFromPython(value, &self.get_mutable_abstract_state_value(index),
-                                          "abstract state " + std::to_string(index) + " of " +
+                                          "abstract state " + cairn::FormatShort(index) + " of " +
                                               self.system_path_name());
           },
           py::arg("index"), py::arg("value"), "Sets abstract state `index` (converted to its type).")
@@ -351,9 +352,9 @@ void DefineSystemsFramework(py::module_ m) {
           [](Context& self, int index, const Eigen::Ref<const Eigen::VectorXd>& value) {
             Eigen::VectorXd& parameter = self.get_mutable_numeric_parameter(index);
             if (parameter.size() != value.size()) {
-              throw py::value_error("numeric parameter " + std::to_string(index) + " of " + self.system_path_name() +
-                                    " has size " + std::to_string(parameter.size()) + ", got a value of size " +
-                                    std::to_string(value.size()));
+              throw py::value_error("numeric parameter " + cairn::FormatShort(index) + " of " + self.system_path_name() +
+                                    " has size " + cairn::FormatShort(parameter.size()) + ", got a value of size " +
+                                    cairn::FormatShort(value.size()));
             }
             parameter = value;
           },
@@ -371,7 +372,7 @@ void DefineSystemsFramework(py::module_ m) {
           [](Context& self, int index, py::handle value) {
             CheckIndex(index, self.num_abstract_parameters(), "abstract parameter");
             AssignAbstractValueFromPython(value, &self.get_mutable_abstract_parameter_value(index),
-                                          "abstract parameter " + std::to_string(index) + " of " +
+                                          "abstract parameter " + cairn::FormatShort(index) + " of " +
                                               self.system_path_name());
           },
           py::arg("index"), py::arg("value"), "Sets abstract parameter `index` (converted to its type).")
@@ -383,7 +384,7 @@ void DefineSystemsFramework(py::module_ m) {
       .def("num_subcontexts", &Context::num_subcontexts, "Number of subcontexts (a diagram's: one per subsystem).")
       .def("system_path_name", &Context::system_path_name, "Path name of the system that created this context.")
       .def("__repr__", [](const Context& self) {
-        return "<Context of " + self.system_path_name() + " at t=" + std::to_string(self.get_time()) + ">";
+        return "<Context of " + self.system_path_name() + " at t=" + cairn::FormatShort(self.get_time()) + ">";
       }, "<Context of <system> at t=...>.");
 
   py::class_<InputPort>(m, "InputPort", py::dynamic_attr(),

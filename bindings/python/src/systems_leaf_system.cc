@@ -22,6 +22,7 @@
 
 #include "abstract_values.h"
 #include "bindings.h"
+#include "cairn/common/number_text.h"
 #include "cairn/systems/framework/context.h"
 #include "cairn/systems/framework/discrete_values.h"
 #include "cairn/systems/framework/leaf_system.h"
@@ -95,8 +96,8 @@ class PyLeafSystem final : public LeafSystem {
       const auto value = result.cast<Eigen::VectorXd>();
       if (value.size() != derivatives.size()) {
         throw std::logic_error("DoCalcTimeDerivatives of system '" + GetPathName() + "' returned " +
-                               std::to_string(value.size()) + " derivatives for " +
-                               std::to_string(derivatives.size()) + " continuous states");
+                               cairn::FormatShort(value.size()) + " derivatives for " +
+                               cairn::FormatShort(derivatives.size()) + " continuous states");
       }
       derivatives = value;
     }
@@ -220,7 +221,7 @@ void DefineSystemsLeafSystem(py::module_ m) {
               if (value.size() != size) {
                 throw std::logic_error("The calc function of output port '" + port_name + "' of system '" +
                                        raw->GetPathName() + "' returned a vector of size " +
-                                       std::to_string(value.size()) + " (declared size " + std::to_string(size) +
+                                       cairn::FormatShort(value.size()) + " (declared size " + cairn::FormatShort(size) +
                                        ")");
               }
               *y = value;

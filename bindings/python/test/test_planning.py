@@ -33,6 +33,11 @@ def test_scenario_and_terrain():
         terrain.height(terrain.cols(), 0)
     with pytest.raises(ValueError, match="missing.yaml"):
         planning.FootstepScenario.Load(source_path("examples", "scenarios", "missing.yaml"))
+    # A generous limit gives the same terrain; a non-positive one is refused with the range.
+    limited = scenario.BuildTerrain(time_limit=600.0)
+    assert (limited.frictions() == terrain.frictions()).all()
+    with pytest.raises(ValueError, match=r"time_limit -1 s must be in \(0, 86400\]"):
+        scenario.BuildTerrain(time_limit=-1.0)
 
 
 def test_plan_footsteps_on_ice(walking_model, oracle):
@@ -93,8 +98,12 @@ def test_values_and_errors(walking_model, oracle):
     terrain = planning.TerrainMap(np.array([0.0, 0.0]), 4, 3, 0.5)
     with pytest.raises(ValueError):
         terrain.SetCell(0, 0, 0.0, np.array([0.0, 0.0, -1.0]), 1.0)
+    stance = planning.Stance(planning.FootPose(x=0.5, y=0.6), planning.FootPose(x=0.5, y=0.4))
     options = planning.FootstepPlannerOptions()
     options.orientations = 64
     with pytest.raises(ValueError, match="orientations|32"):
-        planning.PlanFootsteps(terrain, planning.Stance(), planning.StanceGoal(), oracle, planning.BipedGeometry(),
+        planning.PlanFootsteps(terrain, stance, planning.StanceGoal(stance, 0.2), oracle, planning.BipedGeometry(),
                                options)
+    with pytest.raises(ValueError, match="both feet stand at one point"):
+        planning.PlanFootsteps(terrain, planning.Stance(), planning.StanceGoal(stance, 0.2), oracle,
+                               planning.BipedGeometry(), planning.FootstepPlannerOptions())

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -31,6 +32,7 @@ TEST(StereoEvaluationTest, RocAucOfPerfectAndRandomRankings) {
   EXPECT_NEAR(RocAuc(confidence, error), 0.2, 1e-9);
   EXPECT_NEAR(OptimalAuc(0.2), 0.2 + 0.8 * std::log(0.8), 1e-12);
   CAIRN_EXPECT_THROWS_WITH(RocAuc({1.0f}, {}), std::invalid_argument, "1 confidences and 0 error flags");
+  CAIRN_EXPECT_THROWS_WITH(RocAuc({1.0f, std::nanf("")}, {0, 1}), std::invalid_argument, "confidence 1 is NaN");
   CAIRN_EXPECT_THROWS_WITH(OptimalAuc(1.5), std::invalid_argument, "1.5");
 }
 
@@ -153,6 +155,78 @@ TEST(StereoEvaluationTest, RejectsMismatchedGroundTruth) {
   wta.disparity = cv::Mat(4, 4, CV_32F, cv::Scalar(0.0f));
   CAIRN_EXPECT_THROWS_WITH(EvaluateStereo(confidence, wta, cv::Mat(5, 4, CV_32F), cv::Mat()), std::invalid_argument,
                            "4x5", "CV_32FC1");
+}
+
+// A small consistent volume, WTA and ground truth for the option checks: 12x10 pixels, disparities 0..3.
+struct Tiny {
+  DisparityVolume confidence{10, 12, 0, 3};
+  WtaResult wta;
+  cv::Mat gt{10, 12, CV_32F, cv::Scalar(2.0f)};
+  Tiny() {
+    DisparityVolume costs(10, 12, 0, 3);
+    for (int y = 0; y < 10; ++y) {
+      for (int x = 0; x < 12; ++x) {
+        for (int k = 0; k < 4; ++k) costs.mutable_curve(y, x)[k] = k == 2 ? 0.0f : 5.0f;
+      }
+    }
+    ComputeWinnerTakeAll(costs, WtaOptions{}, &wta);
+    ComputeConfidence(costs, ConfidenceModel::Merrell(CostFunction::kBtSad, 4.0), &confidence);
+  }
+};
+
+TEST(StereoEvaluationTest, RefusesBordersThatAreNegativeOrLeaveNoPixel) {
+  const Tiny t;
+  StereoEvaluationOptions options;
+  options.border = 4;
+  EXPECT_EQ(EvaluateStereo(t.confidence, t.wta, t.gt, cv::Mat(), options).num_pixels, 2u * 4u);
+  options.border = -1;  // used to read row -1 (a segfault)
+  CAIRN_EXPECT_THROWS_WITH(EvaluateStereo(t.confidence, t.wta, t.gt, cv::Mat(), options), std::invalid_argument,
+                           "border -1 is negative");
+  options.border = 5;
+  CAIRN_EXPECT_THROWS_WITH(EvaluateStereo(t.confidence, t.wta, t.gt, cv::Mat(), options), std::invalid_argument,
+                           "border 5 leaves no pixel of the 12x10 image", "at most 4");
+  options.border = 0;
+  options.bad_threshold = std::nan("");
+  CAIRN_EXPECT_THROWS_WITH(EvaluateStereo(t.confidence, t.wta, t.gt, cv::Mat(), options), std::invalid_argument,
+                           "bad_threshold nan");
+  options.bad_threshold = 1.0;
+  options.gt_interval = -1.0;
+  CAIRN_EXPECT_THROWS_WITH(EvaluateStereo(t.confidence, t.wta, t.gt, cv::Mat(), options), std::invalid_argument,
+                           "gt_interval -1");
+  options.gt_interval = 1e300;  // clamped to the volume's range, never converted out of range
+  EXPECT_NO_THROW(EvaluateStereo(t.confidence, t.wta, t.gt, cv::Mat(), options));
+}
+
+TEST(StereoEvaluationTest, RefusesAWinnerTakeAllResultFromAnotherVolume) {
+  Tiny t;
+  StereoEvaluationOptions options;
+  options.border = 0;
+  t.wta.best_index.at<int32_t>(3, 5) = 4;  // the volume has 4 disparities
+  CAIRN_EXPECT_THROWS_WITH(EvaluateStereo(t.confidence, t.wta, t.gt, cv::Mat(), options), std::invalid_argument,
+                           "index 4 at pixel (5, 3)", "4 disparities");
+  t.wta.best_index = cv::Mat();
+  CAIRN_EXPECT_THROWS_WITH(EvaluateStereo(t.confidence, t.wta, t.gt, cv::Mat()), std::invalid_argument,
+                           "does not match");
+  CAIRN_EXPECT_THROWS_WITH(EvaluateStereo(DisparityVolume(), t.wta, t.gt, cv::Mat()), std::invalid_argument,
+                           "confidence volume is empty");
+}
+
+TEST(StereoEvaluationTest, AutomaticMaxDisparityRoundsTheGroundTruthUpAndRefusesNonsense) {
+  cv::Mat gt(4, 64, CV_32F, cv::Scalar(0.0f));
+  gt.at<float>(1, 1) = 19.75f;
+  EXPECT_EQ(AutomaticMaxDisparity(gt), 31);
+  gt.at<float>(2, 2) = 32.0f;
+  EXPECT_EQ(AutomaticMaxDisparity(gt), 47);
+  gt.at<float>(2, 2) = 60.0f;
+  EXPECT_EQ(AutomaticMaxDisparity(gt), 63);  // never past the image
+  gt.at<float>(2, 2) = 64.0f;
+  CAIRN_EXPECT_THROWS_WITH(AutomaticMaxDisparity(gt), std::invalid_argument, "largest disparity 64",
+                           "width 64", "scale");
+  CAIRN_EXPECT_THROWS_WITH(AutomaticMaxDisparity(cv::Mat(4, 4, CV_32F, cv::Scalar(0.0f))), std::invalid_argument,
+                           "no known");
+  gt.at<float>(2, 2) = std::numeric_limits<float>::infinity();
+  CAIRN_EXPECT_THROWS_WITH(AutomaticMaxDisparity(gt), std::invalid_argument, "non-finite");
+  CAIRN_EXPECT_THROWS_WITH(AutomaticMaxDisparity(cv::Mat(2, 2, CV_8U)), std::invalid_argument, "CV_32FC1");
 }
 
 }  // namespace

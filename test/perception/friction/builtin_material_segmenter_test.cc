@@ -111,6 +111,9 @@ TEST_F(BuiltinMaterialSegmenterTest, OutputShapesAndGreyImages) {
   cv::extractChannel(test.images[0], grey, 1);
   EXPECT_EQ(segmenter_->Segment(grey).type(), CV_32FC(14));
   CAIRN_EXPECT_THROWS_WITH(segmenter_->Segment(cv::Mat(8, 8, CV_16UC1)), std::invalid_argument, "8-bit");
+  const int window = segmenter_->features().window();
+  CAIRN_EXPECT_THROWS_WITH(segmenter_->Segment(test.images[0](cv::Rect(0, 0, 64, window - 1)).clone()),
+                           std::invalid_argument, "64x" + std::to_string(window - 1), "smaller than the segmenter's");
 }
 
 TEST_F(BuiltinMaterialSegmenterTest, SaveLoadRoundTrip) {
@@ -172,6 +175,19 @@ TEST(BuiltinMaterialSegmenterTrainTest, BadTrainingInputsAreNamed) {
   const cv::Mat none(set.labels[0].size(), CV_8UC1, cv::Scalar(255));
   CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Train(labels, set.images, {none, set.labels[1]}, options),
                            std::invalid_argument, "no labelled patch centre");
+  {
+    auto many = options;
+    many.hidden_units = 5000;
+    CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Train(labels, set.images, set.labels, many),
+                             std::invalid_argument, "hidden_units 5000", "4096");
+    std::vector<cv::Mat> small = set.images;
+    std::vector<cv::Mat> small_labels = set.labels;
+    small[1] = small[1](cv::Rect(0, 0, options.window - 2, 40)).clone();
+    small_labels[1] = small_labels[1](cv::Rect(0, 0, options.window - 2, 40)).clone();
+    CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Train(labels, small, small_labels, options),
+                             std::invalid_argument, "image 1 is " + std::to_string(options.window - 2) + "x40",
+                             "smaller than the");
+  }
   CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Train({"a", "a"}, set.images, set.labels, options),
                            std::invalid_argument, "'a' appears twice");
 }
@@ -219,6 +235,19 @@ TEST(BuiltinMaterialSegmenterLoadTest, BadFilesGiveClearErrors) {
   WriteText(path, negative);
   CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "temperature -",
                            "must be positive");
+  // Sizes a file states are bounded before anything is allocated from them.
+  std::string hidden = text;
+  const auto b1 = hidden.find("b1:");
+  const auto cols = hidden.find("cols: ", b1) + 6;
+  hidden.replace(cols, hidden.find_first_of(",}\n", cols) - cols, "100000000");
+  WriteText(path, hidden);
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "100000000 hidden units",
+                           "[1, 4096]");
+  std::string window = text;
+  window.replace(window.find("window: "), 8, "window: 4001 #");
+  WriteText(path, window);
+  CAIRN_EXPECT_THROWS_WITH(BuiltinMaterialSegmenter::Load(path), std::invalid_argument, "inconsistent",
+                           "[3, 1023]", "got 4001", "Re-create it");
   std::remove(path.c_str());
 }
 

@@ -330,6 +330,10 @@ TEST(FrictionQuantileImageTest, RejectsBadImagesAndOptions) {
                            std::invalid_argument, "eta", "got 1.5");
   CAIRN_EXPECT_THROWS_WITH(FrictionQuantileImage(registry, {0.9, QuantileMethod::kSearch, 0.0, 1}),
                            std::invalid_argument, "step must be finite and > 0");
+  // A tiny step made the table's size overflow int (and ask for gigabytes).
+  CAIRN_EXPECT_THROWS_WITH(FrictionQuantileImage(registry, {0.9, QuantileMethod::kSearch, 1e-12, 1}),
+                           std::invalid_argument, "in steps of 1e-12", "more than the 1e+06 supported",
+                           "raise the tolerance");
 }
 
 }  // namespace

@@ -80,6 +80,12 @@ TEST(FrictionQuantileTest, QuantileImageValidatesEveryPixel) {
                            std::invalid_argument, "eta", "(0, 1); got 1");
   CAIRN_EXPECT_THROWS_WITH(FrictionQuantile(registry, Eigen::VectorXd::Ones(3), 0.9, QuantileMethod::kExact),
                            std::invalid_argument, "3 entries but the registry has 14 labels");
+  // Steps that would take 1e302 iterations (search) or never end (bisection below the doubles' resolution).
+  CAIRN_EXPECT_THROWS_WITH(
+      FrictionQuantile(registry, pixels.row(0).transpose(), 0.95, QuantileMethod::kSearch, 1e-300),
+      std::invalid_argument, "search step 1e-300 is below 0.0001");
+  EXPECT_NEAR(FrictionQuantile(registry, pixels.row(0).transpose(), 0.95, QuantileMethod::kExact, 1e-300),
+              0.74 - 0.12 * 1.6448536269514722, 1e-9);
 }
 
 }  // namespace

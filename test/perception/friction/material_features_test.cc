@@ -15,7 +15,7 @@ TEST(MaterialFeaturesTest, GridCoversTheImage) {
   EXPECT_EQ(features.GridSize(cv::Size(17, 9)), cv::Size(3, 2));
   EXPECT_EQ(features.CentreOf(0, 17), 4);
   EXPECT_EQ(features.CentreOf(2, 17), 16);  // Clamped to the last pixel.
-  const cv::Mat image(9, 17, CV_8UC3, cv::Scalar(10, 20, 30));
+  const cv::Mat image(15, 17, CV_8UC3, cv::Scalar(10, 20, 30));  // at least one window high
   const cv::Mat descriptors = features.Compute(image);
   EXPECT_EQ(descriptors.rows, 6);
   EXPECT_EQ(descriptors.cols, MaterialFeatures::kDimension);
@@ -53,11 +53,16 @@ TEST(MaterialFeaturesTest, StripesAreCoherentAndNoiseIsNot) {
 }
 
 TEST(MaterialFeaturesTest, BadArgumentsAreNamed) {
-  CAIRN_EXPECT_THROWS_WITH(MaterialFeatures(4, 8), std::invalid_argument, "odd and >= 3", "got 4");
-  CAIRN_EXPECT_THROWS_WITH(MaterialFeatures(15, 0), std::invalid_argument, "stride must be >= 1", "got 0");
+  CAIRN_EXPECT_THROWS_WITH(MaterialFeatures(4, 8), std::invalid_argument, "odd and in [3, 1023]", "got 4");
+  CAIRN_EXPECT_THROWS_WITH(MaterialFeatures(1025, 8), std::invalid_argument, "odd and in [3, 1023]", "got 1025");
+  CAIRN_EXPECT_THROWS_WITH(MaterialFeatures(15, 0), std::invalid_argument, "stride must be in [1, 1023]", "got 0");
+  CAIRN_EXPECT_THROWS_WITH(MaterialFeatures(15, 5000), std::invalid_argument, "stride must be in [1, 1023]");
   const MaterialFeatures features;
   CAIRN_EXPECT_THROWS_WITH(features.Compute(cv::Mat(8, 8, CV_32FC3)), std::invalid_argument, "8-bit", "depth 5");
   CAIRN_EXPECT_THROWS_WITH(features.Compute(cv::Mat()), std::invalid_argument, "non-empty");
+  // An image smaller than the window would be described by its mirrored border: refused.
+  CAIRN_EXPECT_THROWS_WITH(features.Compute(cv::Mat(40, 14, CV_8UC3)), std::invalid_argument, "14x40 pixels",
+                           "smaller than the segmenter's 15x15 patch window");
 }
 
 }  // namespace

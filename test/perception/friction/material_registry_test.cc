@@ -79,6 +79,34 @@ TEST(MaterialRegistryTest, MalformedFilesNameTheKeyAndTheLine) {
                            "Cannot read '/nonexistent/registry.yaml'");
 }
 
+// Finite but physically meaningless friction used to pass: a mean of 1e6 lets every step through.
+TEST(MaterialRegistryTest, RefusesFrictionOutsidePhysicalRanges) {
+  const fs::path path = TempFile("unphysical.yaml");
+  Write(path, "materials:\n  - {label: tile, distribution: normal, mean: 0.9, stddev: 0.1}\n"
+              "  - {label: glue, distribution: normal, mean: 1e6, stddev: 0.1}\n");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "line 3",
+                           "material 'glue'", "the mean 1e+06 is outside (0, 10]");
+  Write(path, "materials:\n  - {label: tile, distribution: truncated_normal, mean: 0.9, stddev: 50}\n");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument,
+                           "the standard deviation 50 is outside [0, 10]");
+  Write(path, "materials:\n  - {label: ice, distribution: gev, location: 0.1, scale: 0.03, shape: -40}\n");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument,
+                           "the shape -40 is outside [-5, 5]");
+  Write(path, "materials:\n  - {label: ice, distribution: normal, mean: .nan, stddev: 0.1}\n");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "line 2",
+                           "'mean' must be a finite number, got '.nan'");
+  Write(path, "materials:\n  - {label: tile, mean: 0.9, stddev: 0.1, contacts: -3}\n");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "'contacts'",
+                           "integer in [0, 1000000000], got '-3'");
+  Write(path, "materials:\n  - {label: tile, mean: 0.9, stddev: 0.1, contacts: 1e12}\n");
+  CAIRN_EXPECT_THROWS_WITH(MaterialRegistry::LoadYaml(path.string()), std::invalid_argument, "'contacts'",
+                           "got '1e12'");
+  fs::remove(path);
+  EXPECT_NO_THROW(CheckPhysicalFriction(FrictionDistribution::NotWalkable()));
+  CAIRN_EXPECT_THROWS_WITH(CheckPhysicalFriction(FrictionDistribution::Normal(0.0, 0.1)), std::invalid_argument,
+                           "the mean 0 is outside (0, 10]", "not_walkable");
+}
+
 TEST(MaterialRegistryTest, MeasuredContactIsANormalNormalUpdate) {
   MaterialRegistry registry({{"tile", FrictionDistribution::Normal(0.9, 0.1), 0}});
   const Eigen::VectorXd certain = Eigen::VectorXd::Ones(1);
@@ -134,7 +162,9 @@ TEST(MaterialRegistryTest, ContactUpdatesRejectWhatTheyCannotExplain) {
   CAIRN_EXPECT_THROWS_WITH(registry.UpdateFromContact(water, ContactObservation::Held(0.4)), std::invalid_argument,
                            "no material with nonzero probability can explain the observation");
   CAIRN_EXPECT_THROWS_WITH(registry.UpdateFromContact(water, ContactObservation::Measured(0.4, 0.0)),
-                           std::invalid_argument, "noise stddev > 0");
+                           std::invalid_argument, "noise stddev in (0, 10]", "got 0");
+  CAIRN_EXPECT_THROWS_WITH(registry.UpdateFromContact(water, ContactObservation::Slipped(1e6)),
+                           std::invalid_argument, "value in [0, 10]", "got 1e+06");
   MaterialRegistry gev({{"ice", FrictionDistribution::GeneralizedExtremeValue(0.1, 0.03, 0.0), 0}});
   CAIRN_EXPECT_THROWS_WITH(gev.UpdateFromContact(Eigen::VectorXd::Ones(1), ContactObservation::Slipped(0.2)),
                            std::invalid_argument, "material 'ice' has a gev distribution");

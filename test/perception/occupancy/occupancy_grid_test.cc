@@ -175,6 +175,11 @@ TEST(OccupancyGridTest, RejectsBadConstruction) {
                            std::invalid_argument, "resolution 0", "5 cm");
   CAIRN_EXPECT_THROWS_WITH(OccupancyGrid(Eigen::Vector3d::Zero(), 0.1, Eigen::Vector3i(1, 0, 1)),
                            std::invalid_argument, "1x0x1");
+  // 2^31 - 1 cubed wrapped round size_t's checks before; now it is named with the limit.
+  CAIRN_EXPECT_THROWS_WITH(OccupancyGrid(Eigen::Vector3d::Zero(), 0.1, Eigen::Vector3i::Constant(2147483647)),
+                           std::invalid_argument, "2147483647x2147483647x2147483647", "more than the 1073741824");
+  CAIRN_EXPECT_THROWS_WITH(OccupancyGrid(Eigen::Vector3d(0, std::nan(""), 0), 0.1, Eigen::Vector3i(1, 1, 1)),
+                           std::invalid_argument, "minimum corner must be finite");
   OccupancyGrid grid(Eigen::Vector3d::Zero(), 0.1, Eigen::Vector3i(1, 1, 1));
   CAIRN_EXPECT_THROWS_WITH(grid.CastRay(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 1.0),
                            std::invalid_argument, "direction is zero");

@@ -1,5 +1,6 @@
 #include "cairn/perception/stereo/cost_samples.h"
 
+#include <limits>
 #include <stdexcept>
 
 #include "expect_throws.h"
@@ -23,6 +24,15 @@ TEST(CostSamplesTest, CollectsConsistentWinnersAndGroundTruthCosts) {
   EXPECT_EQ(samples, (std::vector<float>{11.0f}));
   CAIRN_EXPECT_THROWS_WITH(CollectGroundTruthCosts(costs, cv::Mat(2, 3, CV_32F), cv::Mat(), &samples),
                            std::invalid_argument, "3x2", "LoadDisparityImage");
+  // An infinite true disparity is skipped, not rounded out of range.
+  const cv::Mat far = (cv::Mat_<float>(1, 3) << std::numeric_limits<float>::infinity(), 1.2f, 0.0f);
+  samples.clear();
+  EXPECT_EQ(CollectGroundTruthCosts(costs, far, cv::Mat(), &samples), 1u);
+  // A result without its left-right matrix used to be read through a null row pointer.
+  WtaResult partial;
+  partial.best_cost = wta.best_cost;
+  CAIRN_EXPECT_THROWS_WITH(CollectConsistentWtaCosts(costs, partial, &samples), std::invalid_argument,
+                           "lacks its cost or left-right matrices");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
@@ -92,6 +93,35 @@ TEST_F(StereoSourceTest, ReportsBadFilesClearly) {
   CAIRN_EXPECT_THROWS_WITH(StereoSource(Write(std::string(kCalibration) + "frame: []\n"), 0.1), std::invalid_argument,
                            "line 2", "unknown key 'frame' in the stereo source", "Did you mean 'frames'?");
   CAIRN_EXPECT_THROWS_WITH(StereoSource(Write(kCalibration), -0.1), std::invalid_argument, "period");
+}
+
+TEST_F(StereoSourceTest, RefusesNonFinitePosesAndImagesTooLargeToDecode) {
+  CAIRN_EXPECT_THROWS_WITH(
+      StereoSource(Write(std::string(kCalibration) +
+                         "frames:\n  - {left: l0.png, right: r0.png, translation: [0, .nan, 0], "
+                         "rotation_wxyz: [1, 0, 0, 0]}\n"),
+                   0.1),
+      std::invalid_argument, "line 3", "'translation' must be a finite number, got '.nan'");
+  // A PNG whose header claims 30000 x 30000 pixels is refused before it is decoded.
+  std::vector<uchar> bytes;
+  ASSERT_TRUE(cv::imencode(".png", cv::Mat(1, 1, CV_8UC1, cv::Scalar(0)), bytes));
+  for (int offset : {16, 20}) {
+    bytes[offset + 2] = 0x75;
+    bytes[offset + 3] = 0x30;
+  }
+  std::ofstream((folder_ / "huge.png").string(), std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  CAIRN_EXPECT_THROWS_WITH(
+      StereoSource(Write(std::string(kCalibration) +
+                         "frames:\n  - {left: huge.png, right: r0.png, translation: [0, 0, 0], "
+                         "rotation_wxyz: [1, 0, 0, 0]}\n"),
+                   0.1),
+      std::invalid_argument, "line 3", "frame 0 names image", "huge.png", "30000 x 30000", "limit of 67108864 pixels");
+  CAIRN_EXPECT_THROWS_WITH(
+      StereoSource(Write("calibration: {fx: 400, fy: 410, cx: .inf, cy: 2.5, baseline: 0.1}\nframes:\n"
+                         "  - {left: l0.png, right: r0.png, translation: [0, 0, 0], rotation_wxyz: [1, 0, 0, 0]}\n"),
+                   0.1),
+      std::invalid_argument, "line 1", "'cx' must be a finite number, got '.inf'");
 }
 
 }  // namespace

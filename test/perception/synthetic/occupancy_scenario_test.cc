@@ -146,6 +146,27 @@ TEST(OccupancyScenarioTest, ErrorsNameTheFileTheKeyAndTheLine) {
   expect_error("twice.yaml", Replace(kValid, "  baseline: 0.2", "  baseline: 0.2\n  fx: 70"),
                "the key 'fx' appears twice in one mapping (first at line 4)", 6);
 
+  // Counts are bounded before anything is built from them (100000000 frames took more than 4 GB of poses).
+  expect_error("frames.yaml", Replace(kValid, "frames: 3", "frames: 100000000"), "'trajectory.orbit.frames' must be an integer in [1, 10000]", 31);
+  expect_error("width.yaml", Replace(kValid, "  width: 64", "  width: 100000"), "'camera.width' must be an integer in [16, 8192]", 2);
+  expect_error("seed.yaml", Replace(kValid, "seed: 11", "seed: 1099511627776"), "'textures.crate.seed' must be an integer in [0, 4294967295]", 11);
+  expect_error("far.yaml", Replace(kValid, "center: [0, 3, 0.25]\n    half", "center: [0, 3e300, 0.25]\n    half"),
+               "'objects[1].center[1]' is 3e+300, beyond the +-10000", 19);
+  expect_error("noise.yaml", Replace(kValid, "noise_variance: 4", "noise_variance: 1e9"), "'noise_variance' must be in [0, 65025]", 9);
+  std::string many = kValid;
+  std::string poses = "trajectory:\n  poses:\n";
+  for (int k = 0; k <= OccupancyScenario::kMaxFrames; ++k) poses += "    - {position: [0, 0, 1], look_at: [0, 3, 0]}\n";
+  many = Replace(many, many.substr(many.find("trajectory:"), many.find("grid:") - many.find("trajectory:")), poses);
+  expect_error("poses.yaml", many, "'trajectory.poses' has 10001 entries, more than the 10000", 26);
+  const std::string wide_seed = Write("wide_seed.yaml", Replace(kValid, "seed: 11", "seed: 4294967296"));
+  CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml(wide_seed), std::invalid_argument, "[0, 4294967295]",
+                           "got '4294967296'");
+  EXPECT_EQ(OccupancyScenario::FromYaml(Write("top_seed.yaml", Replace(kValid, "seed: 11", "seed: 4294967295")))
+                .scene.num_objects(),
+            2);
+  CAIRN_EXPECT_THROWS_WITH(BarsScenario::Make(100000000), std::invalid_argument, "100000000 frames",
+                           "1 to 10000");
+
   const std::string typo = Write("suggest.yaml", Replace(kValid, "  baseline: 0.2", "  basline: 0.2"));
   CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml(typo), std::invalid_argument, "Did you mean 'baseline'?");
   CAIRN_EXPECT_THROWS_WITH(OccupancyScenario::FromYaml("/no/such/scene.yaml"), std::invalid_argument,

@@ -104,5 +104,18 @@ TEST(SyntheticStereoRendererTest, SetColourTextureRejectsBadArguments) {
   CAIRN_EXPECT_THROWS_WITH(scene.SetColourTexture(0, nullptr), std::invalid_argument, "empty function");
 }
 
+TEST(SyntheticStereoRendererTest, RefusesSizesAndIndicesThatWouldOverflow) {
+  const StereoCalibration calibration{100.0, 100.0, 15.5, 11.5, 0.1};
+  CAIRN_EXPECT_THROWS_WITH(SyntheticStereoRenderer(calibration, 100000, 100000), std::invalid_argument,
+                           "100000x100000", "at most 67108864 pixels");
+  CAIRN_EXPECT_THROWS_WITH(SyntheticStereoRenderer(calibration, 32, 24, std::nan("")), std::invalid_argument,
+                           "noise variance nan");
+  int wall = 0, box = 0;
+  const SyntheticStereoScene scene = WallAndBox(&wall, &box);
+  const SyntheticStereoRenderer renderer(calibration, 32, 24);
+  CAIRN_EXPECT_THROWS_WITH(renderer.Render(scene, Eigen::Isometry3d::Identity(), -1), std::invalid_argument,
+                           "frame index -1 is negative");
+}
+
 }  // namespace
 }  // namespace cairn::perception

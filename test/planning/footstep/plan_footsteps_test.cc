@@ -1,8 +1,14 @@
 #include <cairn/planning/footstep/plan_footsteps.h>
 
+#include <chrono>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
+
+#include <cairn/planning/footstep/stance_graph.h>
+#include <cairn/planning/footstep/time_limit_reached.h>
 
 #include "expect_throws.h"
 #include "test_step_cost_model.h"
@@ -218,6 +224,59 @@ TEST(PlanFootstepsTest, RejectsBadOptions) {
   options.lattice_resolution = 0.0001;
   CAIRN_EXPECT_THROWS_WITH(PlanFootsteps(ground, StanceAt(0.5, 0.5), GoalAt(0.5, 0.5), model, BipedGeometry{}, options),
                            std::invalid_argument, "at most 4096 per axis");
+}
+
+// The time limit covers the heuristic's precomputation too: a terrain whose set-up alone outlasts it (here, any
+// terrain: the limit ends before the first lattice row) is a result without a plan, not a call that runs on.
+TEST(PlanFootstepsTest, TheTimeLimitCoversTheSetUpBeforeTheSearch) {
+  TerrainMap ground = FlatGround(-0.5, -1.5, 3.5, 1.5, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    TerrainMap::Obstacle box;
+    box.name = "pillar";
+    box.center = Eigen::Vector3d(0.5 + 0.01 * k, 1.2, 0.5);
+    box.half_extents = Eigen::Vector3d(0.004, 0.004, 0.5);
+    ground.AddObstacle(box);
+  }
+  const TestStepCostModel model;
+  FootstepPlannerOptions options = Options();
+  options.search.time_limit = 1e-300;  // rounds to no time at all on the clock
+  const FootstepPlan plan = PlanFootsteps(ground, StanceAt(0.0), GoalAt(2.5), model, BipedGeometry{}, options);
+  EXPECT_FALSE(plan.found);
+  EXPECT_NE(plan.reason.find("no plan within the time limit of 1e-300 s"), std::string::npos) << plan.reason;
+  EXPECT_NE(plan.reason.find("heuristic"), std::string::npos) << plan.reason;
+  EXPECT_NE(plan.reason.find("200 obstacles"), std::string::npos) << plan.reason;
+  EXPECT_EQ(plan.statistics.expansions, 0);
+  // The stance graph alone, with a deadline that has passed.
+  const StanceGoal goal = GoalAt(2.5);
+  CAIRN_EXPECT_THROWS_WITH(StanceGraph(ground, model, BipedGeometry{}, Options(), goal,
+                                       StanceGraph::Clock::now() - std::chrono::seconds(1)),
+                           TimeLimitReached, "the time limit ran out while evaluating the footholds");
+}
+
+TEST(PlanFootstepsTest, RefusesStancesThatCannotStand) {
+  const TerrainMap ground = FlatGround(-0.5, -1.5, 3.5, 1.5, 1.0);
+  const TestStepCostModel model;
+  Stance crossed = StanceAt(0.0);
+  std::swap(crossed.left, crossed.right);
+  CAIRN_EXPECT_THROWS_WITH(PlanFootsteps(ground, crossed, GoalAt(2.5), model, BipedGeometry{}, Options()),
+                           std::invalid_argument, "the start stance", "is not to the left of the right foot",
+                           "crossed");
+  Stance together = StanceAt(0.0);
+  together.right = together.left;
+  StanceGoal goal = GoalAt(2.5);
+  goal.stance = together;
+  CAIRN_EXPECT_THROWS_WITH(PlanFootsteps(ground, StanceAt(0.0), goal, model, BipedGeometry{}, Options()),
+                           std::invalid_argument, "the goal stance", "both feet stand at one point");
+  // Facing -x, the left foot is on the -y side.
+  Stance turned = StanceAt(0.0);
+  turned.left.theta = turned.right.theta = M_PI;
+  EXPECT_NE(StanceGeometryProblem(turned), "");
+  std::swap(turned.left.y, turned.right.y);
+  EXPECT_EQ(StanceGeometryProblem(turned), "");
+  FootstepPlannerOptions options = Options();
+  options.search.time_limit = std::nan("");
+  CAIRN_EXPECT_THROWS_WITH(PlanFootsteps(ground, StanceAt(0.0), GoalAt(2.5), model, BipedGeometry{}, options),
+                           std::invalid_argument, "time_limit must be > 0 seconds, got nan");
 }
 
 }  // namespace

@@ -52,6 +52,8 @@ TEST(TerrainMapTest, ObstaclesRemoveGroundUnderThemAndCollideWithBoxes) {
 
 TEST(TerrainMapTest, RejectsBadInputNamingTheValue) {
   CAIRN_EXPECT_THROWS_WITH(TerrainMap(Eigen::Vector2d::Zero(), 0, 5, 0.05), std::invalid_argument, "0 x 5 cells");
+  CAIRN_EXPECT_THROWS_WITH(TerrainMap(Eigen::Vector2d::Zero(), 100000, 100000, 0.05), std::invalid_argument,
+                           "10000000000 cells are more than the 134217728");
   CAIRN_EXPECT_THROWS_WITH(TerrainMap(Eigen::Vector2d::Zero(), 5, 5, -0.1), std::invalid_argument,
                            "resolution must be a positive length", "-0.1");
   TerrainMap map(Eigen::Vector2d::Zero(), 5, 5, 0.05);

@@ -210,6 +210,36 @@ TEST_F(TransitionOracleTest, RebuildsStaleOrCorruptFiles) {
   std::filesystem::remove(path);
 }
 
+// A cache folder that cannot be created (its parent is a file: even root cannot) or a cache path that cannot be
+// written (it is a folder) costs a warning, not the table.
+TEST_F(TransitionOracleTest, AnUnusableCacheWarnsOnceAndKeepsTheTableInMemory) {
+  const std::filesystem::path root = TempPath("unusable");
+  std::filesystem::remove_all(root);
+  std::filesystem::create_directories(root);
+  std::ofstream(root / "blocker") << "a file where the cache folder should be\n";
+  OracleBuildOptions options;
+  options.num_threads = 2;
+  for (const std::filesystem::path& path : {root / "blocker" / "cache" / "oracle.bin", root / "folder.bin"}) {
+    std::filesystem::create_directories(root / "folder.bin");
+    std::ostringstream log;
+    const TransitionOracle oracle =
+        TransitionOracle::LoadOrBuild(path.string(), *model_, WalkingObjective::kComWorkPlusHeat, Grid(), options, &log);
+    EXPECT_EQ(oracle.Serialize(), oracle_->Serialize()) << path;
+    const std::string text = log.str();
+    const auto warning = text.find("Warning: the transition oracle is not cached");
+    EXPECT_NE(warning, std::string::npos) << text;
+    EXPECT_EQ(text.find("Warning", warning + 1), std::string::npos) << "warned more than once: " << text;
+    EXPECT_NE(text.find("continuing with the table in memory"), std::string::npos) << text;
+  }
+  // A missing folder is created.
+  const std::filesystem::path nested = root / "a" / "b" / "oracle.bin";
+  std::ostringstream log;
+  TransitionOracle::LoadOrBuild(nested.string(), *model_, WalkingObjective::kComWorkPlusHeat, Grid(), options, &log);
+  EXPECT_TRUE(std::filesystem::exists(nested)) << log.str();
+  EXPECT_EQ(log.str().find("Warning"), std::string::npos) << log.str();
+  std::filesystem::remove_all(root);
+}
+
 TEST_F(TransitionOracleTest, ValidatesGrids) {
   OracleGrid grid = Grid();
   grid.dx = {0.25, 0.15};

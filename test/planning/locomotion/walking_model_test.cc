@@ -137,6 +137,11 @@ TEST(WalkingModelTest, ErrorsNameTheFileAndKey) {
                            "body_box");
   CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("swing_height: 0.05", "swing_height: 0.05\nname: twice")),
                            std::invalid_argument, "the key 'name' appears twice");
+  // The name becomes a cache file's name: no folders, no line breaks.
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("name: cairn_humanoid", "name: ../../etc/robot")),
+                           std::invalid_argument, "key 'name'", "letters, digits", "'../../etc/robot'");
+  CAIRN_EXPECT_THROWS_WITH(WalkingModel::Load(WriteVariant("resistance: 0.299", "resistance: .nan")),
+                           std::invalid_argument, "motors.hip_yaw.resistance", "finite");
 }
 
 }  // namespace
