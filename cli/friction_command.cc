@@ -19,6 +19,7 @@
 #include "cairn/perception/io/image_file.h"
 #include "choice_option.h"
 #include "command_registry.h"
+#include "data_directory.h"
 #include "file_checks.h"
 #include "numeric_option.h"
 #include "quiet_stderr.h"
@@ -93,7 +94,7 @@ int Run(const FrictionArguments& args) {
   const FrictionQuantileImage quantiles(registry, {args.eta, method, 0.02, 0});
   // "builtin" alone is the model trained by `cairn friction-train` that ships in data/models.
   const std::string specification =
-      args.segmenter == "builtin" ? std::string("builtin:") + CAIRN_DATA_DIR + "/models/builtin_material_segmenter.yaml"
+      args.segmenter == "builtin" ? "builtin:" + DataDirectory() + "/models/builtin_material_segmenter.yaml"
                                   : args.segmenter;
   const auto segmenter = perception::MakeMaterialSegmenter(specification);
   std::vector<int> channel_to_registry;

@@ -27,6 +27,7 @@
 #include "cairn/common/text_suggestions.h"
 #include "cairn/version.h"
 #include "command_registry.h"
+#include "data_directory.h"
 #include "usage_error.h"
 #include "usage_message.h"
 
@@ -80,7 +81,7 @@ int main(int argc, char** argv) {
   cairn::cli::RegisterAllCommands(&registry);
 
   CLI::App app{"Cairn: perception-driven legged locomotion as block diagrams of typed systems.", "cairn"};
-  app.set_version_flag("--version", "cairn " CAIRN_VERSION_STRING);
+  app.set_version_flag("--version", "cairn " CAIRN_VERSION_STRING "\ndata " + cairn::cli::DataDirectory());
   app.require_subcommand(1);
   const auto bound = registry.BindTo(app);
   const std::vector<std::string> names = registry.names();

@@ -43,20 +43,6 @@ struct OccupancyState {
   bool json{false};
 };
 
-// The occupied cells as an ASCII PLY point cloud (the layout of OccupancyGrid::WritePly), so that it can be
-// written atomically: an interrupted or failed write leaves an earlier file whole.
-std::string PlyText(const perception::OccupancyGrid& grid, double threshold = 0.5) {
-  const std::vector<std::size_t> cells = grid.OccupiedCells(threshold);
-  std::ostringstream out;
-  out << "ply\nformat ascii 1.0\nelement vertex " << cells.size()
-      << "\nproperty float x\nproperty float y\nproperty float z\nproperty float probability\nend_header\n";
-  for (const std::size_t i : cells) {
-    const Eigen::Vector3d p = grid.CellCenter(grid.Cell(i));
-    out << p.x() << " " << p.y() << " " << p.z() << " " << grid.probability(i) << "\n";
-  }
-  return out.str();
-}
-
 int RunOccupancy(const OccupancyState& s) {
   using namespace cairn::perception;
   const bool wta_model = s.model == "wta";
@@ -136,7 +122,7 @@ int RunOccupancy(const OccupancyState& s) {
                 score.precision, score.recall, score.true_positives, score.false_positives, score.num_occupied,
                 total_ms / static_cast<double>(scenario.trajectory.size()));
   }
-  if (!s.ply.empty()) WriteFileAtomically(s.ply, PlyText(grid));
+  if (!s.ply.empty()) grid.WritePly(s.ply);
   return 0;
 }
 

@@ -21,6 +21,7 @@
 #include "cairn/planning/scenarios/footstep_scenario.h"
 #include "choice_option.h"
 #include "command_registry.h"
+#include "data_directory.h"
 #include "file_checks.h"
 #include "numeric_option.h"
 #include "plan_image.h"
@@ -187,7 +188,7 @@ int Run(const PlanArguments& args) {
   }
 
   const std::string robot = scenario.robot().empty()
-                                ? std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid_walking.yaml"
+                                ? DataDirectory() + "/robots/cairn_humanoid_walking.yaml"
                                 : scenario.robot();
   CheckInputFile("the scenario's robot", robot, "a walking-model YAML file");
   const auto model = std::make_shared<const WalkingModel>(WalkingModel::Load(robot));

@@ -2,10 +2,11 @@
 
 #include <cmath>
 #include <cstdint>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "cairn/common/atomic_file.h"
 #include "cairn/common/number_text.h"
 
 namespace cairn::perception {
@@ -107,17 +108,21 @@ std::optional<Eigen::Vector3d> OccupancyGrid::CastRay(const Eigen::Vector3d& ori
   return hit;
 }
 
-void OccupancyGrid::WritePly(const std::string& path, double threshold) const {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("OccupancyGrid::WritePly: cannot write '" + path + "'; check the folder exists");
-  const auto cells = OccupiedCells(threshold);
+std::string OccupancyGrid::PlyText(double threshold) const {
+  const std::vector<std::size_t> cells = OccupiedCells(threshold);
+  std::ostringstream out;
   out << "ply\nformat ascii 1.0\nelement vertex " << cells.size()
       << "\nproperty float x\nproperty float y\nproperty float z\nproperty float probability\nend_header\n";
-  for (std::size_t i : cells) {
+  for (const std::size_t i : cells) {
     const Eigen::Vector3d p = CellCenter(Cell(i));
     out << p.x() << " " << p.y() << " " << p.z() << " " << probability(i) << "\n";
   }
-  if (!out) throw std::runtime_error("OccupancyGrid::WritePly: writing '" + path + "' failed (disk full?)");
+  return out.str();
+}
+
+void OccupancyGrid::WritePly(const std::string& path, double threshold) const {
+  // Atomic: an interrupted or failed write leaves an earlier file at `path` whole.
+  WriteFileAtomically(path, PlyText(threshold));
 }
 
 }  // namespace cairn::perception

@@ -99,7 +99,11 @@ class OccupancyGrid {
   std::optional<Eigen::Vector3d> CastRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                                          double max_range, double threshold = 0.5) const;
 
-  /// Writes the occupied cell centres as an ASCII PLY point cloud with a `probability` property. Throws
+  /// The occupied cell centres (probability above `threshold`) as an ASCII PLY point cloud with a `probability`
+  /// property, in cell order.
+  std::string PlyText(double threshold = 0.5) const;
+
+  /// Writes PlyText() to `path` atomically (an interrupted or failed write leaves an earlier file whole). Throws
   /// std::runtime_error naming the path if it cannot be written.
   void WritePly(const std::string& path, double threshold = 0.5) const;
 

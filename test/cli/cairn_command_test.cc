@@ -23,6 +23,8 @@ TEST(CairnCommandTest, VersionAndHelp) {
   const CairnRun version = RunCairn("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_THAT(version.output, HasSubstr("cairn " CAIRN_VERSION_STRING));
+  // A cairn run from the build tree takes its data from the source tree (the install test checks the prefix's).
+  EXPECT_THAT(version.output, HasSubstr("data " CAIRN_SOURCE_DIR "/data"));
   const CairnRun help = RunCairn("--help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_THAT(help.output, HasSubstr("pendulum"));

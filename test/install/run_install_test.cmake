@@ -75,6 +75,11 @@ execute_process(COMMAND "${cairn}" --version RESULT_VARIABLE result OUTPUT_VARIA
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "The installed cairn command failed (${result}):\n${output}")
 endif()
+# Its default robot and models come from the prefix, not from the source tree it was built from.
+file(REAL_PATH "${prefix}" real_prefix)
+if(NOT output MATCHES "data ${real_prefix}/share/cairn" OR NOT EXISTS "${prefix}/share/cairn/robots/cairn_humanoid.urdf")
+  message(FATAL_ERROR "The installed cairn does not take its data from ${prefix}/share/cairn:\n${output}")
+endif()
 
 list(LENGTH passed count)
 list(JOIN passed " " passed)

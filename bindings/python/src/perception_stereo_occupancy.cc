@@ -412,8 +412,10 @@ void DefinePerceptionStereoOccupancy(py::module_ m) {
           py::arg("threshold") = 0.5, "Centres of the occupied cells, (n, 3).")
       .def("CastRay", &OccupancyGrid::CastRay, py::arg("origin"), py::arg("direction"), py::arg("max_range"),
            py::arg("threshold") = 0.5, "First occupied cell centre along a ray, or None.")
+      .def("PlyText", &OccupancyGrid::PlyText, py::arg("threshold") = 0.5,
+           "The occupied cells as the text of an ASCII PLY point cloud.")
       .def("WritePly", &OccupancyGrid::WritePly, py::arg("path"), py::arg("threshold") = 0.5,
-           "Writes the occupied cells as an ASCII PLY point cloud.")
+           "Writes PlyText() to `path` atomically (an earlier file stays whole if the write fails).")
       .def(
           "log_odds_array",
           [](const OccupancyGrid& g) { return GridArray(g, [&g](std::size_t i) { return double(g.log_odds(i)); }); },

@@ -92,6 +92,9 @@ def test_occupancy_grid_from_a_synthetic_plane():
     sensor.Integrate(confidence, calibration, np.eye(4), grid)
     occupied = grid.OccupiedPoints(0.6)
     assert len(occupied) > 20
+    ply = grid.PlyText(0.6)
+    assert ply.startswith("ply\n") and "element vertex %d\n" % len(occupied) in ply
+    assert len(ply.strip().split("\n")) == 8 + len(occupied)  # 8 header lines, one line per cell
     assert np.median(occupied[:, 2]) == pytest.approx(1.0, abs=0.05)
     assert grid.probabilities().shape == (20, 16, 20)
     copy = pickle.loads(pickle.dumps(grid))

@@ -32,10 +32,15 @@ TEST(OccupancyGridTest, IndexingUpdateClampAndQueries) {
   EXPECT_TRUE(hit->isApprox(grid.CellCenter(*cell)));
   EXPECT_FALSE(grid.CastRay(Eigen::Vector3d(-0.9, 0.25, 0.25), Eigen::Vector3d(1.0, 0.0, 0.0), 5.0).has_value());
   const std::string path = std::string(CAIRN_BINARY_DIR) + "/occupancy_grid_test.ply";
+  {
+    std::ofstream earlier(path);
+    earlier << "an earlier, longer file that WritePly replaces as a whole rather than overwriting in place\n";
+  }
   grid.WritePly(path);
   std::ifstream in(path);
-  std::string header((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_THAT(header, ::testing::HasSubstr("element vertex 1"));
+  std::string contents((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(contents, ::testing::HasSubstr("element vertex 1"));
+  EXPECT_EQ(contents, grid.PlyText());
   std::remove(path.c_str());
 }
 
