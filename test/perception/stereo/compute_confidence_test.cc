@@ -4,35 +4,10 @@
 #include <limits>
 #include <numeric>
 
-#include "cairn/perception/occupancy/internal/fast_log.h"
-#include "cairn/perception/stereo/internal/fast_exp.h"
 #include "expect_throws.h"
 
 namespace cairn::perception {
 namespace {
-
-// The vectorisable exp used by ComputeConfidence() against std::exp over its whole domain.
-TEST(ComputeConfidenceTest, FastExpMatchesStdExp) {
-  double worst = 0.0;
-  for (float x = 0.0f; x > -87.0f; x -= 0.001237f) {
-    const double reference = std::exp(static_cast<double>(x));
-    worst = std::max(worst, std::abs(internal::ExpNonPositive(x) - reference) / reference);
-  }
-  EXPECT_LT(worst, 5e-7);
-  EXPECT_EQ(internal::ExpNonPositive(0.0f), 1.0f);
-  EXPECT_LT(internal::ExpNonPositive(-1.0e6f), 1e-37f);
-  EXPECT_LT(internal::ExpNonPositive(std::numeric_limits<float>::quiet_NaN()), 1e-37f);
-}
-
-// The logarithm of the occupancy update's log-odds against std::log, over the probability clamps' range and more.
-TEST(ComputeConfidenceTest, FastLogMatchesStdLog) {
-  double worst = 0.0;
-  for (float x = 1e-4f; x < 1e4f; x *= 1.0007f) {
-    worst = std::max(worst, std::abs(internal::LogPositive(x) - std::log(static_cast<double>(x))));
-  }
-  EXPECT_LT(worst, 2e-6);
-  EXPECT_EQ(internal::LogPositive(1.0f), 0.0f);
-}
 
 TEST(ComputeConfidenceTest, NormalisedLikelihoodsEvenWhenExpUnderflows) {
   DisparityVolume costs(1, 3, 0, 3);
