@@ -5,6 +5,7 @@
 //
 // The oracle is loaded from (or built into) CAIRN_ORACLE_CACHE, default /tmp/cairn-benchmark-oracles.
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -55,7 +56,8 @@ void BM_PlanScenario(benchmark::State& state, const std::string& name) {
       FootstepScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/" + name + ".yaml");
   const TerrainMap terrain = scenario.BuildTerrain();
   FootstepPlannerOptions options = scenario.planner();
-  options.search.time_limit = 60.0;
+  const char* limit = std::getenv("CAIRN_PLAN_TIME_LIMIT");
+  options.search.time_limit = limit != nullptr ? std::atof(limit) : 60.0;
   FootstepPlan plan;
   for (auto _ : state) {
     plan = PlanFootsteps(terrain, scenario.start(), scenario.goal(), *setup.oracle, setup.geometry, options);
@@ -66,6 +68,14 @@ void BM_PlanScenario(benchmark::State& state, const std::string& name) {
   state.counters["expansions"] = static_cast<double>(plan.statistics.expansions);
   state.counters["steps"] = static_cast<double>(plan.steps.size());
   state.counters["energy_J"] = plan.energy;
+  state.counters["cost"] = plan.cost;
+  state.counters["generated"] = static_cast<double>(plan.statistics.generated);
+  state.counters["us_per_expansion"] =
+      plan.statistics.expansions > 0 ? 1e6 * plan.statistics.plan_seconds / plan.statistics.expansions : 0.0;
+  std::fprintf(stderr, "%s: found %d bound %.6f cost %.9f steps %zu expansions %lld generated %lld %.3f s\n",
+               name.c_str(), plan.found, plan.statistics.epsilon, plan.cost, plan.steps.size(),
+               static_cast<long long>(plan.statistics.expansions), static_cast<long long>(plan.statistics.generated),
+               plan.statistics.plan_seconds);
 }
 
 }  // namespace
@@ -76,6 +86,15 @@ BENCHMARK_CAPTURE(BM_PlanScenario, ice_narrow_012, std::string("ice_narrow_012")
 BENCHMARK_CAPTURE(BM_PlanScenario, ice_narrow_006, std::string("ice_narrow_006"))
     ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_PlanScenario, ice_wide_006, std::string("ice_wide_006"))
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+
+BENCHMARK_CAPTURE(BM_PlanScenario, slope_10, std::string("slope_10"))
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_PlanScenario, slope_20, std::string("slope_20"))
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_PlanScenario, slope_25, std::string("slope_25"))
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_PlanScenario, stairs, std::string("stairs"))
     ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();

@@ -39,6 +39,16 @@ namespace cairn::planning {
 /// more tightly on open ground, because a stride has none of the lateral zig-zag of single steps. The heuristic is
 /// the larger of the two.
 ///
+/// A third, much tighter bound is exact but for one relaxation: a backward Dijkstra search from the goal over
+/// single footholds (position, yaw and side of the newer foot), linked by every step the stance graph could take
+/// from that foothold, each priced by the step cost model itself. Only the friction under the older foot is
+/// dropped (the step is priced under the smaller friction of its other two feet, which can only make it
+/// cheaper), so on ground of one friction it is the true cost to go of the newer foot's chain. It is computed
+/// once per goal, terrain and friction setting (for lattices of at most kMaxExactFootholds footholds) and makes
+/// the optimal search expand little more than the optimal plan's stances. All three bounds are taken as their
+/// maximum; the exact one is scaled by (1 - 1e-9) so that rounding differences between its sums and the
+/// search's never make it overestimate.
+///
 /// Footholds are evaluated once and cached. Satisfies the Graph requirements of AraStar().
 class StanceGraph {
  public:
@@ -60,6 +70,10 @@ class StanceGraph {
   };
 
   using Clock = std::chrono::steady_clock;
+
+  /// Largest lattice (positions x yaws) for which the exact foothold-chain bound is computed: it keeps two
+  /// doubles per foothold (one per side), 64 MB at this size. Larger lattices use the relaxed bounds alone.
+  static constexpr double kMaxExactFootholds = 4e6;
 
   /// The references must outlive the graph. Throws std::invalid_argument for a lattice the terrain cannot hold
   /// (more than 4096 positions per axis) or bad options, and TimeLimitReached when the heuristic's precomputation
@@ -103,7 +117,33 @@ class StanceGraph {
   /// `side` (infinity when none exists); see the class comment.
   double ChainDistanceToGoal(const LatticeFoot& foot, FootSide side);
 
+  /// The exact foothold-chain bound (see the class comment) for `foot` as the newer foot of `side`: a lower
+  /// bound on the cost of every plan from a stance whose newer foot it is (infinity when none exists; 0 when the
+  /// lattice is too large for it).
+  double FootholdChainDistance(const LatticeFoot& foot, FootSide side) const;
+
  private:
+  // A step the lattice allows from a stance foot of one yaw: the target's offset in lattice positions, its yaw
+  // bins turned (outward, >= 0), and the displacement in the stance foot's frame (dz filled in per step).
+  struct StepClass {
+    int dix{0};
+    int diy{0};
+    int k{0};
+    StepDisplacement d;
+  };
+  // The steps into a target: class `index` of forward_classes_[stance yaw][moving side].
+  struct IncomingStep {
+    int stance_itheta{0};
+    int index{0};
+  };
+  void BuildStepClasses();
+  void ComputeFootholdChainDistances();
+  // Cost of the relaxed step from foothold `from` (the newer foot) by `step` under the friction of the two
+  // footholds, or infinity when the step does not exist.
+  double RelaxedStepCost(const LatticeFoot& from, int moving, int class_index, const StepClass& step);
+  std::size_t FootholdIndex(const LatticeFoot& foot) const {
+    return (static_cast<std::size_t>(foot.iy) * lattice_cols_ + foot.ix) * options_.orientations + foot.itheta;
+  }
   void GenerateSuccessors(Key key, std::vector<std::pair<Key, double>>* out);
   // Prices the move of the older foot to `target`; false when the edge does not exist.
   bool EvaluateStep(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side, const LatticeFoot& target,
@@ -140,7 +180,19 @@ class StanceGraph {
   int lattice_rows_;
   bool ignore_friction_{false};
   Clock::time_point deadline_;
-  std::unordered_map<std::uint32_t, Foothold> footholds_;
+  // Every foothold of the lattice, indexed by FootholdIndex(), evaluated on first use.
+  std::vector<Foothold> footholds_;
+  std::vector<char> foothold_evaluated_;
+  // forward_classes_[itheta * 2 + moving side]: the steps from a stance foot of that yaw (side 0: left moves).
+  std::vector<std::vector<StepClass>> forward_classes_;
+  // incoming_[itheta * 2 + moving side]: the steps landing with that yaw.
+  std::vector<std::vector<IncomingStep>> incoming_;
+  // Memoised costs of steps with dz == 0: per friction value seen, one entry per step class (NaN: not yet).
+  std::vector<double> memo_friction_;
+  std::vector<std::vector<double>> memo_cost_;
+  std::vector<std::size_t> class_offset_;  // first memo slot of forward_classes_[i]
+  // Per foothold index * 2 + side: the exact foothold-chain bound; empty when the lattice is too large.
+  std::vector<double> foothold_distance_;
   // Per lattice position, for the left (0) and right (1) goal foothold; filled by ComputeChainDistances().
   std::vector<double> chain_distance_[2];
   // Per lattice position: cost of the cheapest relaxed chain of strides of one foot to its goal foothold.
