@@ -382,7 +382,13 @@ void StanceGraph::ComputeChainDistances() {
     }
     return false;
   };
-  ComputeStrideDistances(usable, friction);
+  // The exact foothold-chain bound makes the stride bound redundant (it prices the same strides by the model's
+  // own step costs); the stride bound is kept for lattices too large for the exact one.
+  if (static_cast<double>(footholds_.size()) > kMaxExactFootholds) {
+    ComputeStrideDistances(usable, friction);
+  } else {
+    for (std::vector<double>& distance : stride_distance_) distance.assign(usable.size(), 0.0);
+  }
   const bool has_obstacles = !terrain_.obstacles().empty();
   // A real step between footholds at p and q uses at most the friction both offer, and its cost is at least the
   // model's bound there (friction values are few: one per region, so the bounds are memoised).
@@ -494,9 +500,17 @@ double StanceGraph::RelaxedStepCost(const LatticeFoot& from, int moving, int cla
   const double mu = ignore_friction_ ? kUnlimitedFriction : std::min(fn.friction, ft.friction);
   StepDisplacement displacement = step.d;
   displacement.dz = dz;
-  auto evaluate = [&]() {
-    TransitionCost cost = cost_model_.Evaluate(displacement, mu);
-    if (cost.feasible) return cost.cost;
+  // The cost of this step for a height in [dz_lo, dz_hi] (a lower bound over the range when it is one).
+  auto evaluate = [&](double dz_lo, double dz_hi) {
+    auto at = [&](const StepDisplacement& s) {
+      if (dz_lo == dz_hi) {
+        const TransitionCost cost = cost_model_.Evaluate(s, mu);
+        return cost.feasible ? cost.cost : kInf;
+      }
+      return cost_model_.MinCostOverHeights(s, dz_lo, dz_hi, mu);
+    };
+    const double cost = at(displacement);
+    if (cost < kInf) return cost;
     // The search's displacement of this step differs from ours by rounding; where the model's feasibility
     // changes within that distance (an interpolating model next to an infeasible entry), the step may exist
     // for the search, so try displacements just beside ours too.
@@ -508,25 +522,40 @@ double StanceGraph::RelaxedStepCost(const LatticeFoot& from, int moving, int cla
         StepDisplacement nudged = displacement;
         nudged.dx += a * kNudge;
         nudged.dy += b * kNudge;
-        cost = cost_model_.Evaluate(nudged, mu);
-        if (cost.feasible) best = std::min(best, cost.cost);
+        best = std::min(best, at(nudged));
       }
     }
     return best;
   };
-  if (dz != 0.0) return evaluate();
-  // Level steps repeat everywhere: memoise their cost per friction value (the values are few, one per region;
-  // beyond 16 of them, evaluate every time).
+  // Steps repeat all over the lattice: memoise their cost per friction value (the values are few, one per
+  // region; beyond kMaxMemoFrictions of them, evaluate every time). Level steps are memoised exactly; the
+  // heights of other steps differ by the rounding of the terrain's heights, so they are priced once per
+  // kHeightBucket of height by the model's lower bound over it.
   constexpr std::size_t kMaxMemoFrictions = 16;
+  constexpr double kHeightBucket = 1e-4;  // m: costs about 0.06 J per step of tightness on this robot
   std::size_t slot = 0;
   while (slot < memo_friction_.size() && memo_friction_[slot] != mu) ++slot;
   if (slot == memo_friction_.size()) {
-    if (memo_friction_.size() >= kMaxMemoFrictions) return evaluate();
+    if (memo_friction_.size() >= kMaxMemoFrictions) return evaluate(dz, dz);
     memo_friction_.push_back(mu);
     memo_cost_.emplace_back(class_offset_.back(), std::numeric_limits<double>::quiet_NaN());
+    memo_last_height_.emplace_back(class_offset_.back(), std::make_pair(std::numeric_limits<double>::quiet_NaN(), 0.0));
   }
-  double& memo = memo_cost_[slot][class_offset_[2 * from.itheta + moving] + class_index];
-  if (std::isnan(memo)) memo = evaluate();
+  const std::size_t global_class = class_offset_[2 * from.itheta + moving] + class_index;
+  if (dz != 0.0) {
+    const double bucket = std::floor(dz / kHeightBucket);
+    const std::uint64_t key = (static_cast<std::uint64_t>(global_class) * kMaxMemoFrictions + slot) * 65536 +
+                              static_cast<std::uint64_t>(static_cast<std::int64_t>(bucket) + 32768);
+    // On a plane a class's height is nearly the same everywhere: remember its last bucket before hashing.
+    std::pair<double, double>& last = memo_last_height_[slot][global_class];
+    if (last.first == bucket) return last.second;
+    const auto [it, inserted] = memo_height_cost_.try_emplace(key, 0.0);
+    if (inserted) it->second = evaluate(bucket * kHeightBucket, (bucket + 1.0) * kHeightBucket);
+    last = {bucket, it->second};
+    return it->second;
+  }
+  double& memo = memo_cost_[slot][global_class];
+  if (std::isnan(memo)) memo = evaluate(0.0, 0.0);
   return memo;
 }
 
@@ -536,6 +565,8 @@ void StanceGraph::ComputeFootholdChainDistances() {
   const std::size_t num_footholds = footholds_.size();
   memo_friction_.clear();
   memo_cost_.clear();
+  memo_height_cost_.clear();
+  memo_last_height_.clear();
   if (static_cast<double>(num_footholds) > kMaxExactFootholds) {
     foothold_distance_.clear();
     return;
@@ -579,6 +610,18 @@ void StanceGraph::ComputeFootholdChainDistances() {
       }
     }
   }
+  // Compact copies of what the relaxation reads of every foothold (all are evaluated by now).
+  std::vector<double> height(num_footholds), friction(num_footholds);
+  std::vector<char> supported(num_footholds);
+  for (std::size_t f = 0; f < num_footholds; ++f) {
+    const Foothold& foothold = footholds_[f];
+    supported[f] = foothold.supported && foothold_evaluated_[f];
+    height[f] = foothold.z;
+    friction[f] = ignore_friction_ ? kUnlimitedFriction : foothold.friction;
+  }
+  const bool has_obstacles = !terrain_.obstacles().empty();
+  const StepReach& reach = cost_model_.reach();
+  constexpr double kTolerance = 1e-9;
   std::size_t pops = 0;
   while (!queue.empty()) {
     const auto [value, i] = queue.top();
@@ -588,17 +631,34 @@ void StanceGraph::ComputeFootholdChainDistances() {
     // Node i is a foothold t (the newer foot, of side i % 2); its predecessors are the footholds f of the other
     // side from which a step moves this side's foot onto t.
     const int moving = static_cast<int>(i % 2);
-    const std::size_t foothold = i / 2;
-    const int it = static_cast<int>(foothold % d);
-    const std::size_t cell = foothold / d;
+    const std::size_t t = i / 2;
+    const int it = static_cast<int>(t % d);
+    const std::size_t cell = t / d;
     const int tx = static_cast<int>(cell % lattice_cols_), ty = static_cast<int>(cell / lattice_cols_);
     for (const IncomingStep& in : incoming_[2 * it + moving]) {
       const StepClass& step = forward_classes_[2 * in.stance_itheta + moving][in.index];
-      const LatticeFoot f{tx - step.dix, ty - step.diy, in.stance_itheta};
-      if (f.ix < 0 || f.iy < 0 || f.ix >= lattice_cols_ || f.iy >= lattice_rows_) continue;
-      const std::size_t j = FootholdIndex(f) * 2 + (1 - moving);
-      if (dist[j] <= value || !EvaluateFoothold(f).supported) continue;
-      const double candidate = value + RelaxedStepCost(f, moving, in.index, step);
+      const int fx = tx - step.dix, fy = ty - step.diy;
+      if (fx < 0 || fy < 0 || fx >= lattice_cols_ || fy >= lattice_rows_) continue;
+      const std::size_t f = (static_cast<std::size_t>(fy) * lattice_cols_ + fx) * d + in.stance_itheta;
+      const std::size_t j = f * 2 + (1 - moving);
+      if (dist[j] <= value || !supported[f]) continue;
+      double cost;
+      const double dz = height[t] - height[f];
+      if (dz == 0.0 && !has_obstacles) {
+        // The common case, inlined: a level step whose cost is memoised for this friction.
+        const double mu = std::min(friction[f], friction[t]);
+        std::size_t slot = 0;
+        while (slot < memo_friction_.size() && memo_friction_[slot] != mu) ++slot;
+        const double memo = slot < memo_friction_.size()
+                                ? memo_cost_[slot][class_offset_[2 * in.stance_itheta + moving] + in.index]
+                                : std::numeric_limits<double>::quiet_NaN();
+        cost = std::isnan(memo) ? RelaxedStepCost(LatticeFoot{fx, fy, in.stance_itheta}, moving, in.index, step) : memo;
+      } else if (dz < reach.dz_min - kTolerance || dz > reach.dz_max + kTolerance) {
+        continue;
+      } else {
+        cost = RelaxedStepCost(LatticeFoot{fx, fy, in.stance_itheta}, moving, in.index, step);
+      }
+      const double candidate = value + cost;
       if (candidate < dist[j]) {
         dist[j] = candidate;
         queue.emplace(candidate, j);

@@ -43,7 +43,9 @@ namespace cairn::planning {
 /// single footholds (position, yaw and side of the newer foot), linked by every step the stance graph could take
 /// from that foothold, each priced by the step cost model itself. Only the friction under the older foot is
 /// dropped (the step is priced under the smaller friction of its other two feet, which can only make it
-/// cheaper), so on ground of one friction it is the true cost to go of the newer foot's chain. It is computed
+/// cheaper), so on level ground of one friction it is the true cost to go of the newer foot's chain (steps up or
+/// down are priced by the model's lower bound over 0.1 mm of height, MinCostOverHeights(), so that the rounding
+/// of the terrain's heights does not make every slope step a new one to price). It is computed
 /// once per goal, terrain and friction setting (for lattices of at most kMaxExactFootholds footholds) and makes
 /// the optimal search expand little more than the optimal plan's stances. All three bounds are taken as their
 /// maximum; the exact one is scaled by (1 - 1e-9) so that rounding differences between its sums and the
@@ -190,12 +192,17 @@ class StanceGraph {
   // Memoised costs of steps with dz == 0: per friction value seen, one entry per step class (NaN: not yet).
   std::vector<double> memo_friction_;
   std::vector<std::vector<double>> memo_cost_;
+  // Memoised lower bounds of other steps, per (class, friction, height bucket); see RelaxedStepCost().
+  std::unordered_map<std::uint64_t, double> memo_height_cost_;
+  // Per friction value and class: the last height bucket looked up and its bound.
+  std::vector<std::vector<std::pair<double, double>>> memo_last_height_;
   std::vector<std::size_t> class_offset_;  // first memo slot of forward_classes_[i]
   // Per foothold index * 2 + side: the exact foothold-chain bound; empty when the lattice is too large.
   std::vector<double> foothold_distance_;
   // Per lattice position, for the left (0) and right (1) goal foothold; filled by ComputeChainDistances().
   std::vector<double> chain_distance_[2];
-  // Per lattice position: cost of the cheapest relaxed chain of strides of one foot to its goal foothold.
+  // Per lattice position: cost of the cheapest relaxed chain of strides of one foot to its goal foothold (0 when
+  // the exact foothold-chain bound replaces it).
   std::vector<double> stride_distance_[2];
   // cos and sin of yaw at half-bin steps: index 2 * itheta (+1 for the half bin after it).
   std::vector<double> half_bin_cos_;

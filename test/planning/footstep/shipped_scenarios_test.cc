@@ -90,13 +90,15 @@ TEST_P(ShippedScenariosTest, TheOptimalCostIsTheKnownOne) {
     const StanceGraph::Key key = newer == FootSide::kLeft ? graph.MakeKey(right, left, FootSide::kLeft)
                                                           : graph.MakeKey(left, right, FootSide::kRight);
     EXPECT_LE(graph.Heuristic(key), to_go + 1e-6) << "after step " << k;
-    // The foothold-chain bound is nearly exact: only friction under the older foot is relaxed, so on ground of
-    // one friction it matches the cost to go (checked on the uniform scenarios) but for its rounding margin.
+    // The foothold-chain bound is nearly exact: only friction under the older foot is relaxed, so on level
+    // ground of one friction it matches the cost to go but for its rounding margin; on slopes, whose steps it
+    // prices by the lower bound over 0.1 mm of height, it stays within a few hundredths of a joule per step.
     const std::string name = GetParam().scenario;
-    if (name == "flat" || name.rfind("slope", 0) == 0) {
-      EXPECT_GE(graph.FootholdChainDistance(newer == FootSide::kLeft ? left : right, newer),
-                (1.0 - 2e-9) * to_go - 1e-6)
-          << "after step " << k;
+    const double chain = graph.FootholdChainDistance(newer == FootSide::kLeft ? left : right, newer);
+    if (name == "flat") {
+      EXPECT_GE(chain, (1.0 - 2e-9) * to_go - 1e-6) << "after step " << k;
+    } else if (name.rfind("slope", 0) == 0) {
+      EXPECT_GE(chain, to_go - 0.1 * static_cast<double>(plan.steps.size() - k)) << "after step " << k;
     }
   }
 }
