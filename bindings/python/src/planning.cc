@@ -474,6 +474,9 @@ void DefinePlanning(py::module_ m) {
                                                             "heuristic and the reach.")
       .def("Evaluate", &StepCostModel::Evaluate, py::arg("d"), py::arg("mu_allowed"),
            "Minimum-cost step with displacement d and RCOF <= mu_allowed.")
+      .def("MinCostOverHeights", &StepCostModel::MinCostOverHeights, py::arg("d"), py::arg("dz_lo"), py::arg("dz_hi"),
+           py::arg("mu_allowed"),
+           "Lower bound on the cost of step d with its height anywhere in [dz_lo, dz_hi] (inf: none is feasible).")
       .def("min_cost_per_metre", &StepCostModel::min_cost_per_metre, "Lower bound of cost per metre.")
       .def("min_cost_per_step", &StepCostModel::min_cost_per_step, "Fixed cost every step pays.")
       .def("reach", &StepCostModel::reach, "Evaluable displacements.")

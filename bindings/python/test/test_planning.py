@@ -84,6 +84,19 @@ def test_footstep_planner_system_matches_the_function(walking_model, oracle):
     assert ours == theirs
 
 
+def test_min_cost_over_heights(oracle):
+    d = planning.StepDisplacement(dx=0.25, dy=0.2)
+    costs = []
+    for dz in np.linspace(0.0, 0.04, 9):
+        step = oracle.Evaluate(planning.StepDisplacement(dx=0.25, dy=0.2, dz=float(dz)), 1.0)
+        assert step.feasible
+        costs.append(step.cost)
+    bound = oracle.MinCostOverHeights(d, 0.0, 0.04, 1.0)
+    assert bound <= min(costs) * (1 + 1e-12)
+    assert bound >= min(costs) * (1 - 1e-12)  # the oracle's bound is the exact minimum
+    assert oracle.MinCostOverHeights(d, 1.0, 1.1, 1.0) == float("inf")  # beyond the reach
+
+
 def test_values_and_errors(walking_model, oracle):
     pose = planning.FootPose(x=1.0, y=2.0, theta=0.5)
     assert pickle.loads(pickle.dumps(pose)).to_dict() == {"x": 1.0, "y": 2.0, "z": 0.0, "theta": 0.5}
