@@ -93,6 +93,9 @@ class StanceGraph {
     ComputeChainDistances();
   }
 
+  /// Whether steps ignore friction (set_ignore_friction()).
+  bool ignores_friction() const { return ignore_friction_; }
+
   /// The nearest lattice foothold to `pose` (false when outside the lattice).
   bool Snap(const FootPose& pose, LatticeFoot* foot) const;
   FootPose PoseOf(const LatticeFoot& foot) const;
