@@ -84,6 +84,24 @@ def test_footstep_planner_system_matches_the_function(walking_model, oracle):
     assert ours == theirs
 
 
+def test_footstep_replanner_matches_plan_footsteps(walking_model, oracle):
+    scenario = planning.FootstepScenario.Load(ICE)
+    terrain = scenario.BuildTerrain()
+    geometry = planning.BipedGeometry()
+    options = budgeted(scenario.planner())
+    replanner = planning.FootstepReplanner(terrain, scenario.goal(), oracle, geometry, options)
+    assert not replanner.prepared()
+    first = replanner.Plan(scenario.start())
+    assert first.found and replanner.prepared()
+    start = first.StanceAfter(0)
+    again = replanner.Plan(start)
+    direct = planning.PlanFootsteps(terrain, start, scenario.goal(), oracle, geometry, options)
+    assert again.found and again.cost == direct.cost
+    assert len(again.steps) == len(first.steps) - 1
+    with pytest.raises(ValueError, match="cost model is null"):
+        planning.FootstepReplanner(terrain, scenario.goal(), None, geometry, options)
+
+
 def test_min_cost_over_heights(oracle):
     d = planning.StepDisplacement(dx=0.25, dy=0.2)
     costs = []
