@@ -8,6 +8,7 @@
 // planning time limit is CAIRN_PLAN_TIME_LIMIT seconds (default 60). Each plan's exact cost goes to stderr.
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -85,9 +86,9 @@ void BM_PlanScenario(benchmark::State& state, const std::string& name) {
 
 // Replanning as the robot walks (issue 17): the optimal plan again after the first step of the optimal plan has
 // been taken, and after a new patch of ice (mu 0.06, 0.3 m x 0.3 m) has appeared under the plan's fifth step.
-// The iteration time is a FootstepReplanner's Plan(): after a step it reuses the precomputation of the first
-// plan; after the terrain changed it is a new replanner, so it computes the heuristic again. `full_ms` is
-// PlanFootsteps() on the same input, for comparison.
+// The iteration time is a FootstepReplanner's Plan() (after the terrain change with its UpdateTerrain()), which
+// reuses the precomputation of the first plan: the ice only raises step costs, so the heuristic stays admissible.
+// `full_ms` is PlanFootsteps() on the same input, for comparison.
 void BM_Replan(benchmark::State& state, const std::string& name, bool terrain_change) {
   const Setup& setup = GetSetup();
   const FootstepScenario scenario =
@@ -117,13 +118,14 @@ void BM_Replan(benchmark::State& state, const std::string& name, bool terrain_ch
   }
   FootstepPlan plan;
   for (auto _ : state) {
+    double update_seconds = 0.0;
     if (terrain_change) {
-      FootstepReplanner changed(terrain, scenario.goal(), setup.oracle, setup.geometry, options);
-      plan = changed.Plan(start);
-    } else {
-      plan = walking.Plan(start);
+      const auto t0 = std::chrono::steady_clock::now();
+      if (!walking.UpdateTerrain(terrain)) state.SkipWithError("the new ice should keep the heuristic");
+      update_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
-    state.SetIterationTime(plan.statistics.plan_seconds);
+    plan = walking.Plan(start);
+    state.SetIterationTime(update_seconds + plan.statistics.plan_seconds);
   }
   const FootstepPlan full = PlanFootsteps(terrain, start, scenario.goal(), *setup.oracle, setup.geometry, options);
   state.counters["optimal"] = plan.statistics.epsilon <= 1.0 ? 1 : 0;

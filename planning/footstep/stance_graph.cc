@@ -188,6 +188,33 @@ const StanceGraph::Foothold& StanceGraph::EvaluateFoothold(const LatticeFoot& fo
   return result;
 }
 
+void StanceGraph::RefreshFootholds(int col0, int row0, int col1, int row1) {
+  // A sole's samples lie within this distance of its centre; one terrain cell more covers the cell containing
+  // the centre (the foothold's plane) and rounding.
+  const double reach = std::hypot(0.49 * geometry_.foot_length, 0.49 * geometry_.foot_width) + terrain_.resolution();
+  const Eigen::Vector2d lo = terrain_.origin() + terrain_.resolution() * Eigen::Vector2d(col0, row0) -
+                             Eigen::Vector2d::Constant(reach);
+  const Eigen::Vector2d hi = terrain_.origin() + terrain_.resolution() * Eigen::Vector2d(col1 + 1, row1 + 1) +
+                             Eigen::Vector2d::Constant(reach);
+  const double res = options_.lattice_resolution;
+  const int ix0 = std::max(0, static_cast<int>(std::floor((lo.x() - terrain_.origin().x()) / res)));
+  const int iy0 = std::max(0, static_cast<int>(std::floor((lo.y() - terrain_.origin().y()) / res)));
+  const int ix1 = std::min(lattice_cols_ - 1, static_cast<int>(std::ceil((hi.x() - terrain_.origin().x()) / res)));
+  const int iy1 = std::min(lattice_rows_ - 1, static_cast<int>(std::ceil((hi.y() - terrain_.origin().y()) / res)));
+  for (int iy = iy0; iy <= iy1; ++iy) {
+    for (int ix = ix0; ix <= ix1; ++ix) {
+      for (int it = 0; it < options_.orientations; ++it) {
+        const LatticeFoot foot{ix, iy, it};
+        const std::size_t index = FootholdIndex(foot);
+        if (!foothold_evaluated_[index]) continue;
+        foothold_evaluated_[index] = 0;
+        footholds_[index] = Foothold{};
+        EvaluateFoothold(foot);
+      }
+    }
+  }
+}
+
 StanceGraph::Key StanceGraph::MakeKey(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side) const {
   return static_cast<Key>(PackFoot(older)) | (static_cast<Key>(PackFoot(newer)) << kFootBits) |
          (static_cast<Key>(newer_side == FootSide::kRight) << (2 * kFootBits));

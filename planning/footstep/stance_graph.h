@@ -93,6 +93,12 @@ class StanceGraph {
     ComputeChainDistances();
   }
 
+  /// Evaluates again every foothold whose sole may touch a terrain cell in columns [col0, col1] and rows
+  /// [row0, row1], after the terrain the graph refers to has changed there. The heuristic is not recomputed: it
+  /// stays admissible when the change only raised step costs (less friction, ground or walkability removed, new
+  /// obstacles), since every step cost can then only have grown; FootstepReplanner::UpdateTerrain() checks that.
+  void RefreshFootholds(int col0, int row0, int col1, int row1);
+
   /// Whether steps ignore friction (set_ignore_friction()).
   bool ignores_friction() const { return ignore_friction_; }
 

@@ -553,6 +553,8 @@ void DefinePlanning(py::module_ m) {
            "Keeps a copy of the terrain.")
       .def("Plan", &FootstepReplanner::Plan, py::arg("start"), py::call_guard<py::gil_scoped_release>(),
            "The plan PlanFootsteps would return from `start` (without the GIL).")
+      .def("UpdateTerrain", &FootstepReplanner::UpdateTerrain, py::arg("terrain"),
+           "Replaces the terrain (same grid); True when the precomputation is kept (the change only raised costs).")
       .def("prepared", &FootstepReplanner::prepared, "Whether the heuristic's precomputation is done.");
   m.def(
       "RefineFootstepPlan",

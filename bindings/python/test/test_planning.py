@@ -98,6 +98,16 @@ def test_footstep_replanner_matches_plan_footsteps(walking_model, oracle):
     direct = planning.PlanFootsteps(terrain, start, scenario.goal(), oracle, geometry, options)
     assert again.found and again.cost == direct.cost
     assert len(again.steps) == len(first.steps) - 1
+    # Less friction everywhere only raises costs: the precomputation is kept and the plan stays optimal.
+    slippery = scenario.BuildTerrain()
+    for row in range(slippery.rows()):
+        for col in range(slippery.cols()):
+            if slippery.walkable(col, row):
+                slippery.SetCell(col, row, slippery.height(col, row), np.array([0.0, 0.0, 1.0]),  # level ground
+                                 min(slippery.friction(col, row), 0.3))
+    assert replanner.UpdateTerrain(slippery) and replanner.prepared()
+    assert replanner.Plan(start).cost == pytest.approx(
+        planning.PlanFootsteps(slippery, start, scenario.goal(), oracle, geometry, options).cost, abs=1e-6)
     with pytest.raises(ValueError, match="cost model is null"):
         planning.FootstepReplanner(terrain, scenario.goal(), None, geometry, options)
 

@@ -102,6 +102,45 @@ TEST(FootstepReplannerTest, AFailureDoesNotLeakIntoTheNextPlan) {
                  PlanFootsteps(s.terrain, outside, s.scenario.goal(), *oracle, HumanoidGeometry(), s.options));
 }
 
+// A new patch of ice ahead only raises step costs: the precomputed heuristic is kept and the replan is still
+// optimal (the cost PlanFootsteps finds on the new terrain). More friction somewhere discards it.
+TEST(FootstepReplannerTest, KeepsTheHeuristicWhenTheTerrainOnlyGotWorse) {
+  const Loaded s = Load("flat");
+  const auto oracle = test::SharedOracle(WalkingObjective::kComWorkPlusHeat);
+  FootstepReplanner replanner(s.terrain, s.scenario.goal(), oracle, HumanoidGeometry(), s.options);
+  const FootstepPlan first = replanner.Plan(s.scenario.start());
+  ASSERT_TRUE(first.found && first.steps.size() > 6);
+  TerrainMap icy = s.terrain;
+  const FootPose& p = first.steps[4].pose;
+  for (int r = 0; r < icy.rows(); ++r) {
+    for (int c = 0; c < icy.cols(); ++c) {
+      const Eigen::Vector2d q = icy.CellCenter(c, r);
+      if (std::abs(q.x() - p.x) < 0.15 && std::abs(q.y() - p.y) < 0.15) {
+        icy.SetCell(c, r, icy.height(c, r), icy.normal(c, r), 0.06);
+      }
+    }
+  }
+  EXPECT_TRUE(replanner.UpdateTerrain(icy));
+  EXPECT_TRUE(replanner.prepared());
+  const FootstepPlan replan = replanner.Plan(s.scenario.start());
+  const FootstepPlan direct = PlanFootsteps(icy, s.scenario.start(), s.scenario.goal(), *oracle, HumanoidGeometry(),
+                                            s.options);
+  ASSERT_TRUE(replan.found && direct.found);
+  EXPECT_EQ(replan.statistics.epsilon, 1.0);
+  EXPECT_NEAR(replan.cost, direct.cost, 1e-6);
+  EXPECT_GT(replan.cost, first.cost) << "the ice lies on the old plan's way";
+
+  TerrainMap grippy = icy;
+  grippy.SetCell(0, 0, grippy.height(0, 0), grippy.normal(0, 0), 2.0);
+  EXPECT_FALSE(replanner.UpdateTerrain(grippy));
+  EXPECT_FALSE(replanner.prepared());
+  EXPECT_NEAR(replanner.Plan(s.scenario.start()).cost,
+              PlanFootsteps(grippy, s.scenario.start(), s.scenario.goal(), *oracle, HumanoidGeometry(), s.options).cost,
+              1e-6);
+  CAIRN_EXPECT_THROWS_WITH(replanner.UpdateTerrain(TerrainMap(s.terrain.origin(), 10, 10, s.terrain.resolution())),
+                           std::invalid_argument, "grid (10 x 10 cells");
+}
+
 TEST(FootstepReplannerTest, RejectsBadInput) {
   const Loaded s = Load("flat");
   CAIRN_EXPECT_THROWS_WITH(FootstepReplanner(s.terrain, s.scenario.goal(), nullptr, HumanoidGeometry(), s.options),
