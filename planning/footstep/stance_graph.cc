@@ -409,8 +409,8 @@ void StanceGraph::ComputeChainDistances() {
     }
     return false;
   };
-  // The exact foothold-chain bound makes the stride bound redundant (it prices the same strides by the model's
-  // own step costs); the stride bound is kept for lattices too large for the exact one.
+  // Where the exact foothold-chain bound exists, the stride bound (a valid but looser bound on the same strides)
+  // is not worth its Dijkstra with links of two steps' length; 0 is a valid bound in its place.
   if (static_cast<double>(footholds_.size()) > kMaxExactFootholds) {
     ComputeStrideDistances(usable, friction);
   } else {
@@ -610,6 +610,7 @@ void StanceGraph::ComputeFootholdChainDistances() {
   };
   // Seeds: a newer foot at its goal foothold whose next step puts the other foot on its own ends the plan.
   for (int iy = 0; iy < lattice_rows_; ++iy) {
+    CheckDeadline("finding the goal footholds of the heuristic");
     for (int ix = 0; ix < lattice_cols_; ++ix) {
       for (int it = 0; it < d; ++it) {
         const LatticeFoot f{ix, iy, it};

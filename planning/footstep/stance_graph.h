@@ -47,9 +47,11 @@ namespace cairn::planning {
 /// down are priced by the model's lower bound over 0.1 mm of height, MinCostOverHeights(), so that the rounding
 /// of the terrain's heights does not make every slope step a new one to price). It is computed
 /// once per goal, terrain and friction setting (for lattices of at most kMaxExactFootholds footholds) and makes
-/// the optimal search expand little more than the optimal plan's stances. All three bounds are taken as their
-/// maximum; the exact one is scaled by (1 - 1e-9) so that rounding differences between its sums and the
-/// search's never make it overestimate.
+/// the optimal search expand little more than the optimal plan's stances. The heuristic is the largest of the
+/// bounds computed; the stride bound is computed only for lattices too large for the exact one (below that size
+/// it never exceeded the exact bound on the shipped scenarios, and its Dijkstra with long links is costly). The
+/// exact bound is scaled by (1 - 1e-9) so that rounding differences between its sums and the search's never make
+/// it overestimate.
 ///
 /// Footholds are evaluated once and cached. Satisfies the Graph requirements of AraStar().
 class StanceGraph {
@@ -74,7 +76,8 @@ class StanceGraph {
   using Clock = std::chrono::steady_clock;
 
   /// Largest lattice (positions x yaws) for which the exact foothold-chain bound is computed: it keeps two
-  /// doubles per foothold (one per side), 64 MB at this size. Larger lattices use the relaxed bounds alone.
+  /// doubles per foothold (one per side) and, while computing them, about as much again (about 130 MB at this
+  /// size). Larger lattices use the relaxed bounds alone.
   static constexpr double kMaxExactFootholds = 4e6;
 
   /// The references must outlive the graph. Throws std::invalid_argument for a lattice the terrain cannot hold
