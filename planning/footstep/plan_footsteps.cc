@@ -12,6 +12,7 @@
 
 #include <cairn/common/number_text.h>
 #include <cairn/planning/footstep/ara_star.h>
+#include <cairn/planning/footstep/internal/plan_on_stance_graph.h>
 #include <cairn/planning/footstep/stance_graph.h>
 #include <cairn/planning/footstep/time_limit_reached.h>
 
@@ -97,11 +98,10 @@ std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& st
 
 }  // namespace
 
-FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const StanceGoal& goal,
-                           const StepCostModel& cost_model, const BipedGeometry& geometry,
-                           const FootstepPlannerOptions& options) {
-  const auto t0 = Clock::now();
-  auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+namespace internal {
+
+Clock::time_point CheckPlanInputs(const Stance& start, const StanceGoal& goal, const FootstepPlannerOptions& options,
+                                  Clock::time_point t0) {
   for (const auto& [stance, what] : {std::pair<const Stance*, const char*>{&start, "start"}, {&goal.stance, "goal"}}) {
     const std::string problem = StanceGeometryProblem(*stance);
     if (!problem.empty()) throw std::invalid_argument(std::string("PlanFootsteps: the ") + what + " stance: " + problem);
@@ -112,25 +112,24 @@ FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const
   }
   // The time limit covers the whole call: the heuristic's precomputation, the search and the diagnosis after a
   // failed search. Beyond 1e9 s it is as good as none (and would overflow the clock).
-  const Clock::time_point deadline =
-      options.search.time_limit > 1e9
-          ? Clock::time_point::max()
-          : t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.search.time_limit));
+  return options.search.time_limit > 1e9
+             ? Clock::time_point::max()
+             : t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.search.time_limit));
+}
+
+std::string TimeLimitDuringPrecomputation(const FootstepPlannerOptions& options, const TimeLimitReached& error) {
+  return "no plan within the time limit of " + FormatShort(options.search.time_limit) + " s: " + error.what() +
+         "; raise the limit, crop the terrain to the region around start and goal, or coarsen the lattice";
+}
+
+FootstepPlan PlanOnStanceGraph(StanceGraph& graph, const TerrainMap& terrain, const Stance& start,
+                               const StanceGoal& goal, const StepCostModel& cost_model,
+                               const FootstepPlannerOptions& options, Clock::time_point t0,
+                               Clock::time_point deadline) {
+  auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   FootstepPlan plan;
   plan.cost_model = cost_model.description();
   plan.start = start;
-  std::optional<StanceGraph> graph_storage;
-  try {
-    graph_storage.emplace(terrain, cost_model, geometry, options, goal, deadline);
-  } catch (const TimeLimitReached& error) {
-    plan.reason = "no plan within the time limit of " + FormatShort(options.search.time_limit) + " s: " +
-                  error.what() + "; raise the limit, crop the terrain to the region around start and goal, or "
-                  "coarsen the lattice";
-    plan.statistics.plan_seconds = seconds();
-    return plan;
-  }
-  StanceGraph& graph = *graph_storage;
-
   StanceGraph::LatticeFoot left, right, goal_left, goal_right;
   for (const std::string& reason :
        {CheckFoothold(graph, terrain, "start", FootSide::kLeft, start.left, &left),
@@ -149,15 +148,17 @@ FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const
   // Either foot may move first: the stance where the left foot landed last lets the right foot move, and vice versa.
   const std::vector<StanceGraph::Key> starts = {graph.MakeKey(right, left, FootSide::kLeft),
                                                 graph.MakeKey(left, right, FootSide::kRight)};
+  // The graph may have served earlier searches (FootstepReplanner): count this search's rejections only.
+  const FootstepPlanStatistics before = graph.rejections();
   AraStarOptions search = options.search;
   search.time_limit = SecondsLeft(deadline);
   const AraStarResult<StanceGraph::Key> result = AraStar(graph, starts, search);
   plan.statistics.expansions = result.expansions;
   plan.statistics.generated = result.generated;
   plan.statistics.improvements = static_cast<int>(result.improvements.size());
-  plan.statistics.rejected_support = graph.rejections().rejected_support;
-  plan.statistics.rejected_collision = graph.rejections().rejected_collision;
-  plan.statistics.rejected_friction = graph.rejections().rejected_friction;
+  plan.statistics.rejected_support = graph.rejections().rejected_support - before.rejected_support;
+  plan.statistics.rejected_collision = graph.rejections().rejected_collision - before.rejected_collision;
+  plan.statistics.rejected_friction = graph.rejections().rejected_friction - before.rejected_friction;
 
   if (result.found) {
     plan.found = true;
@@ -184,6 +185,27 @@ FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const
   plan.reason = reason.str();
   plan.statistics.plan_seconds = seconds();
   return plan;
+}
+
+}  // namespace internal
+
+FootstepPlan PlanFootsteps(const TerrainMap& terrain, const Stance& start, const StanceGoal& goal,
+                           const StepCostModel& cost_model, const BipedGeometry& geometry,
+                           const FootstepPlannerOptions& options) {
+  const auto t0 = Clock::now();
+  const Clock::time_point deadline = internal::CheckPlanInputs(start, goal, options, t0);
+  std::optional<StanceGraph> graph;
+  try {
+    graph.emplace(terrain, cost_model, geometry, options, goal, deadline);
+  } catch (const TimeLimitReached& error) {
+    FootstepPlan plan;
+    plan.cost_model = cost_model.description();
+    plan.start = start;
+    plan.reason = internal::TimeLimitDuringPrecomputation(options, error);
+    plan.statistics.plan_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return plan;
+  }
+  return internal::PlanOnStanceGraph(*graph, terrain, start, goal, cost_model, options, t0, deadline);
 }
 
 }  // namespace cairn::planning

@@ -102,6 +102,10 @@ StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_mo
     half_bin_cos_.push_back(std::cos(yaw));
     half_bin_sin_.push_back(std::sin(yaw));
   }
+  const std::size_t num_footholds = static_cast<std::size_t>(lattice_cols_) * lattice_rows_ * options.orientations;
+  footholds_.assign(num_footholds, Foothold{});
+  foothold_evaluated_.assign(num_footholds, 0);
+  BuildStepClasses();
   ComputeChainDistances();
   if (!(min_cost_per_metre_ >= 0.0) || !std::isfinite(min_cost_per_metre_)) {
     fail("the step cost model's min_cost_per_metre() must be finite and >= 0, got " +
@@ -143,15 +147,16 @@ FootPose StanceGraph::PoseOf(const LatticeFoot& foot) const {
   pose.x = p.x();
   pose.y = p.y();
   pose.theta = Yaw(foot.itheta);
-  const auto it = footholds_.find(PackFoot(foot));
-  pose.z = it != footholds_.end() ? it->second.z : 0.0;
+  const std::size_t index = FootholdIndex(foot);
+  pose.z = foothold_evaluated_[index] ? footholds_[index].z : 0.0;
   return pose;
 }
 
 const StanceGraph::Foothold& StanceGraph::EvaluateFoothold(const LatticeFoot& foot) {
-  const auto [it, inserted] = footholds_.try_emplace(PackFoot(foot));
-  Foothold& result = it->second;
-  if (!inserted) return result;
+  const std::size_t index = FootholdIndex(foot);
+  Foothold& result = footholds_[index];
+  if (foothold_evaluated_[index]) return result;
+  foothold_evaluated_[index] = 1;
   const Eigen::Vector2d p = Position(foot);
   int col, row;
   if (!terrain_.CellAt(p.x(), p.y(), &col, &row) || !terrain_.walkable(col, row)) return result;
@@ -183,6 +188,33 @@ const StanceGraph::Foothold& StanceGraph::EvaluateFoothold(const LatticeFoot& fo
   return result;
 }
 
+void StanceGraph::RefreshFootholds(int col0, int row0, int col1, int row1) {
+  // A sole's samples lie within this distance of its centre; one terrain cell more covers the cell containing
+  // the centre (the foothold's plane) and rounding.
+  const double reach = std::hypot(0.49 * geometry_.foot_length, 0.49 * geometry_.foot_width) + terrain_.resolution();
+  const Eigen::Vector2d lo = terrain_.origin() + terrain_.resolution() * Eigen::Vector2d(col0, row0) -
+                             Eigen::Vector2d::Constant(reach);
+  const Eigen::Vector2d hi = terrain_.origin() + terrain_.resolution() * Eigen::Vector2d(col1 + 1, row1 + 1) +
+                             Eigen::Vector2d::Constant(reach);
+  const double res = options_.lattice_resolution;
+  const int ix0 = std::max(0, static_cast<int>(std::floor((lo.x() - terrain_.origin().x()) / res)));
+  const int iy0 = std::max(0, static_cast<int>(std::floor((lo.y() - terrain_.origin().y()) / res)));
+  const int ix1 = std::min(lattice_cols_ - 1, static_cast<int>(std::ceil((hi.x() - terrain_.origin().x()) / res)));
+  const int iy1 = std::min(lattice_rows_ - 1, static_cast<int>(std::ceil((hi.y() - terrain_.origin().y()) / res)));
+  for (int iy = iy0; iy <= iy1; ++iy) {
+    for (int ix = ix0; ix <= ix1; ++ix) {
+      for (int it = 0; it < options_.orientations; ++it) {
+        const LatticeFoot foot{ix, iy, it};
+        const std::size_t index = FootholdIndex(foot);
+        if (!foothold_evaluated_[index]) continue;
+        foothold_evaluated_[index] = 0;
+        footholds_[index] = Foothold{};
+        EvaluateFoothold(foot);
+      }
+    }
+  }
+}
+
 StanceGraph::Key StanceGraph::MakeKey(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side) const {
   return static_cast<Key>(PackFoot(older)) | (static_cast<Key>(PackFoot(newer)) << kFootBits) |
          (static_cast<Key>(newer_side == FootSide::kRight) << (2 * kFootBits));
@@ -204,7 +236,15 @@ double StanceGraph::Heuristic(Key key) const {
   const double chain = std::max(ChainDistance(newer, 0), ChainDistance(newer, 1));
   const double stride = stride_distance_[side == FootSide::kLeft ? 0 : 1]
                                         [static_cast<std::size_t>(newer.iy) * lattice_cols_ + newer.ix];
-  return std::max(chain, stride);
+  return std::max({chain, stride, FootholdChainDistance(newer, side)});
+}
+
+double StanceGraph::FootholdChainDistance(const LatticeFoot& foot, FootSide side) const {
+  if (foothold_distance_.empty()) return 0.0;
+  // The margin covers rounding: the search sums the same step costs in another order, and its displacements
+  // come from absolute lattice positions rather than offsets.
+  constexpr double kRoundingMargin = 1.0 - 1e-9;
+  return kRoundingMargin * foothold_distance_[FootholdIndex(foot) * 2 + (side == FootSide::kLeft ? 0 : 1)];
 }
 
 bool StanceGraph::IsGoal(Key key) const {
@@ -369,7 +409,13 @@ void StanceGraph::ComputeChainDistances() {
     }
     return false;
   };
-  ComputeStrideDistances(usable, friction);
+  // Where the exact foothold-chain bound exists, the stride bound (a valid but looser bound on the same strides)
+  // is not worth its Dijkstra with links of two steps' length; 0 is a valid bound in its place.
+  if (static_cast<double>(footholds_.size()) > kMaxExactFootholds) {
+    ComputeStrideDistances(usable, friction);
+  } else {
+    for (std::vector<double>& distance : stride_distance_) distance.assign(usable.size(), 0.0);
+  }
   const bool has_obstacles = !terrain_.obstacles().empty();
   // A real step between footholds at p and q uses at most the friction both offer, and its cost is at least the
   // model's bound there (friction values are few: one per region, so the bounds are memoised).
@@ -389,6 +435,264 @@ void StanceGraph::ComputeChainDistances() {
                      return b.per_step + b.per_metre * length;
                    },
                    chain_distance_);
+  ComputeFootholdChainDistances();
+}
+
+void StanceGraph::BuildStepClasses() {
+  // Tolerances make the classes a superset of the steps the search takes: its displacements come from absolute
+  // positions and differ from these by rounding, and a bound must not miss a step.
+  constexpr double kTolerance = 1e-9;
+  const StepReach& reach = cost_model_.reach();
+  const int d = options_.orientations;
+  const double res = options_.lattice_resolution;
+  const double yaw_step = 2.0 * M_PI / d;
+  const int k0 = static_cast<int>(std::ceil(reach.dtheta_min / yaw_step - 1e-9));
+  const int k1 = static_cast<int>(std::floor(reach.dtheta_max / yaw_step + 1e-9));
+  const int radius = static_cast<int>(std::ceil(max_step_length_ / res)) + 1;
+  const Eigen::Vector3d sole(0.5 * geometry_.foot_length - kTolerance, 0.5 * geometry_.foot_width - kTolerance, 1.0);
+  forward_classes_.assign(2 * d, {});
+  incoming_.assign(2 * d, {});
+  class_offset_.assign(2 * d + 1, 0);
+  for (int itheta = 0; itheta < d; ++itheta) {
+    const double cn = half_bin_cos_[2 * itheta], sn = half_bin_sin_[2 * itheta];
+    for (int moving = 0; moving < 2; ++moving) {
+      const int sigma = moving == 0 ? 1 : -1;
+      std::vector<StepClass>& classes = forward_classes_[2 * itheta + moving];
+      for (int diy = -radius; diy <= radius; ++diy) {
+        for (int dix = -radius; dix <= radius; ++dix) {
+          const Eigen::Vector2d delta = res * Eigen::Vector2d(dix, diy);
+          const double dx = cn * delta.x() + sn * delta.y();
+          const double dy = sigma * (-sn * delta.x() + cn * delta.y());
+          if (dx < reach.dx_min - kTolerance || dx > reach.dx_max + kTolerance || dy < reach.dy_min - kTolerance ||
+              dy > reach.dy_max + kTolerance) {
+            continue;
+          }
+          for (int k = k0; k <= k1; ++k) {
+            const int target_itheta = ((itheta + sigma * k) % d + d) % d;
+            const int bins = BinDelta(itheta, target_itheta);
+            if (bins != 0) {
+              const int half_bins = 2 * d;
+              const int mid = ((2 * itheta + bins) % half_bins + half_bins) % half_bins;
+              if (sigma * (-half_bin_sin_[mid] * delta.x() + half_bin_cos_[mid] * delta.y()) <
+                  reach.dy_min - kTolerance) {
+                continue;
+              }
+            }
+            if (delta.squaredNorm() < sole.head<2>().squaredNorm() * 4.0 &&
+                internal::YawBoxesOverlap(Eigen::Vector3d(delta.x(), delta.y(), 0.0), sole, Yaw(target_itheta),
+                                          Eigen::Vector3d::Zero(), sole, Yaw(itheta))) {
+              continue;
+            }
+            StepClass step;
+            step.dix = dix;
+            step.diy = diy;
+            step.k = k;
+            step.d.dx = dx;
+            step.d.dy = dy;
+            step.d.dtheta = sigma * bins * yaw_step;
+            incoming_[2 * target_itheta + moving].push_back(
+                IncomingStep{itheta, static_cast<int>(classes.size())});
+            classes.push_back(step);
+          }
+        }
+      }
+    }
+  }
+  for (int i = 0; i < 2 * d; ++i) class_offset_[i + 1] = class_offset_[i] + forward_classes_[i].size();
+}
+
+double StanceGraph::RelaxedStepCost(const LatticeFoot& from, int moving, int class_index, const StepClass& step) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  constexpr double kTolerance = 1e-9;
+  const int d = options_.orientations;
+  const int sigma = moving == 0 ? 1 : -1;
+  const LatticeFoot target{from.ix + step.dix, from.iy + step.diy, ((from.itheta + sigma * step.k) % d + d) % d};
+  if (target.ix < 0 || target.iy < 0 || target.ix >= lattice_cols_ || target.iy >= lattice_rows_) return kInf;
+  const Foothold& ft = EvaluateFoothold(target);
+  if (!ft.supported) return kInf;
+  const Foothold& fn = EvaluateFoothold(from);
+  const StepReach& reach = cost_model_.reach();
+  const double dz = ft.z - fn.z;
+  if (dz < reach.dz_min - kTolerance || dz > reach.dz_max + kTolerance) return kInf;
+  if (!terrain_.obstacles().empty()) {
+    // As the search checks it, from the same absolute positions.
+    const Eigen::Vector2d pn = Position(from), pt = Position(target);
+    const Eigen::Vector2d mid = 0.5 * (pn + pt);
+    const double body_z = std::max(ft.z, fn.z) + geometry_.body_bottom + geometry_.body_half_extents.z();
+    if (terrain_.BoxHitsObstacle(Eigen::Vector3d(mid.x(), mid.y(), body_z), geometry_.body_half_extents,
+                                 Yaw(from.itheta) + 0.5 * BinDelta(from.itheta, target.itheta) * (2.0 * M_PI / d))) {
+      return kInf;
+    }
+  }
+  const double mu = ignore_friction_ ? kUnlimitedFriction : std::min(fn.friction, ft.friction);
+  StepDisplacement displacement = step.d;
+  displacement.dz = dz;
+  // The cost of this step for a height in [dz_lo, dz_hi] (a lower bound over the range when it is one).
+  auto evaluate = [&](double dz_lo, double dz_hi) {
+    auto at = [&](const StepDisplacement& s) {
+      if (dz_lo == dz_hi) {
+        const TransitionCost cost = cost_model_.Evaluate(s, mu);
+        return cost.feasible ? cost.cost : kInf;
+      }
+      return cost_model_.MinCostOverHeights(s, dz_lo, dz_hi, mu);
+    };
+    const double cost = at(displacement);
+    if (cost < kInf) return cost;
+    // The search's displacement of this step differs from ours by rounding; where the model's feasibility
+    // changes within that distance (an interpolating model next to an infeasible entry), the step may exist
+    // for the search, so try displacements just beside ours too.
+    constexpr double kNudge = 1e-12;
+    double best = kInf;
+    for (int a = -1; a <= 1; ++a) {
+      for (int b = -1; b <= 1; ++b) {
+        if (a == 0 && b == 0) continue;
+        StepDisplacement nudged = displacement;
+        nudged.dx += a * kNudge;
+        nudged.dy += b * kNudge;
+        best = std::min(best, at(nudged));
+      }
+    }
+    return best;
+  };
+  // Steps repeat all over the lattice: memoise their cost per friction value (the values are few, one per
+  // region; beyond kMaxMemoFrictions of them, evaluate every time). Level steps are memoised exactly; the
+  // heights of other steps differ by the rounding of the terrain's heights, so they are priced once per
+  // kHeightBucket of height by the model's lower bound over it.
+  constexpr std::size_t kMaxMemoFrictions = 16;
+  constexpr double kHeightBucket = 1e-4;  // m: costs about 0.06 J per step of tightness on this robot
+  std::size_t slot = 0;
+  while (slot < memo_friction_.size() && memo_friction_[slot] != mu) ++slot;
+  if (slot == memo_friction_.size()) {
+    if (memo_friction_.size() >= kMaxMemoFrictions) return evaluate(dz, dz);
+    memo_friction_.push_back(mu);
+    memo_cost_.emplace_back(class_offset_.back(), std::numeric_limits<double>::quiet_NaN());
+    memo_last_height_.emplace_back(class_offset_.back(), std::make_pair(std::numeric_limits<double>::quiet_NaN(), 0.0));
+  }
+  const std::size_t global_class = class_offset_[2 * from.itheta + moving] + class_index;
+  if (dz != 0.0) {
+    const double bucket = std::floor(dz / kHeightBucket);
+    const std::uint64_t key = (static_cast<std::uint64_t>(global_class) * kMaxMemoFrictions + slot) * 65536 +
+                              static_cast<std::uint64_t>(static_cast<std::int64_t>(bucket) + 32768);
+    // On a plane a class's height is nearly the same everywhere: remember its last bucket before hashing.
+    std::pair<double, double>& last = memo_last_height_[slot][global_class];
+    if (last.first == bucket) return last.second;
+    const auto [it, inserted] = memo_height_cost_.try_emplace(key, 0.0);
+    if (inserted) it->second = evaluate(bucket * kHeightBucket, (bucket + 1.0) * kHeightBucket);
+    last = {bucket, it->second};
+    return it->second;
+  }
+  double& memo = memo_cost_[slot][global_class];
+  if (std::isnan(memo)) memo = evaluate(0.0, 0.0);
+  return memo;
+}
+
+void StanceGraph::ComputeFootholdChainDistances() {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const int d = options_.orientations;
+  const std::size_t num_footholds = footholds_.size();
+  memo_friction_.clear();
+  memo_cost_.clear();
+  memo_height_cost_.clear();
+  memo_last_height_.clear();
+  if (static_cast<double>(num_footholds) > kMaxExactFootholds) {
+    foothold_distance_.clear();
+    return;
+  }
+  std::vector<double>& dist = foothold_distance_;
+  dist.assign(2 * num_footholds, kInf);
+  using Item = std::pair<double, std::size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  auto near_goal = [&](const LatticeFoot& f, int side) {
+    const FootPose& g = side == 0 ? goal_.stance.left : goal_.stance.right;
+    const Eigen::Vector2d p = Position(f);
+    return std::hypot(p.x() - g.x, p.y() - g.y) <= goal_.position_tolerance &&
+           std::abs(WrapAngle(Yaw(f.itheta) - g.theta)) <= goal_.yaw_tolerance;
+  };
+  // Seeds: a newer foot at its goal foothold whose next step puts the other foot on its own ends the plan.
+  for (int iy = 0; iy < lattice_rows_; ++iy) {
+    CheckDeadline("finding the goal footholds of the heuristic");
+    for (int ix = 0; ix < lattice_cols_; ++ix) {
+      for (int it = 0; it < d; ++it) {
+        const LatticeFoot f{ix, iy, it};
+        if (!EvaluateFoothold(f).supported) continue;
+        for (int side = 0; side < 2; ++side) {
+          if (!near_goal(f, side)) continue;
+          const int moving = 1 - side;
+          const std::vector<StepClass>& classes = forward_classes_[2 * it + moving];
+          double best = kInf;
+          for (std::size_t c = 0; c < classes.size(); ++c) {
+            const StepClass& step = classes[c];
+            const int sigma = moving == 0 ? 1 : -1;
+            const LatticeFoot t{ix + step.dix, iy + step.diy, ((it + sigma * step.k) % d + d) % d};
+            if (t.ix < 0 || t.iy < 0 || t.ix >= lattice_cols_ || t.iy >= lattice_rows_ || !near_goal(t, moving)) {
+              continue;
+            }
+            best = std::min(best, RelaxedStepCost(f, moving, static_cast<int>(c), step));
+          }
+          const std::size_t i = FootholdIndex(f) * 2 + side;
+          if (best < dist[i]) {
+            dist[i] = best;
+            queue.emplace(best, i);
+          }
+        }
+      }
+    }
+  }
+  // Compact copies of what the relaxation reads of every foothold (all are evaluated by now).
+  std::vector<double> height(num_footholds), friction(num_footholds);
+  std::vector<char> supported(num_footholds);
+  for (std::size_t f = 0; f < num_footholds; ++f) {
+    const Foothold& foothold = footholds_[f];
+    supported[f] = foothold.supported && foothold_evaluated_[f];
+    height[f] = foothold.z;
+    friction[f] = ignore_friction_ ? kUnlimitedFriction : foothold.friction;
+  }
+  const bool has_obstacles = !terrain_.obstacles().empty();
+  const StepReach& reach = cost_model_.reach();
+  constexpr double kTolerance = 1e-9;
+  std::size_t pops = 0;
+  while (!queue.empty()) {
+    const auto [value, i] = queue.top();
+    queue.pop();
+    if (value > dist[i]) continue;
+    if ((++pops & 1023) == 0) CheckDeadline("computing the heuristic's foothold chains to the goal");
+    // Node i is a foothold t (the newer foot, of side i % 2); its predecessors are the footholds f of the other
+    // side from which a step moves this side's foot onto t.
+    const int moving = static_cast<int>(i % 2);
+    const std::size_t t = i / 2;
+    const int it = static_cast<int>(t % d);
+    const std::size_t cell = t / d;
+    const int tx = static_cast<int>(cell % lattice_cols_), ty = static_cast<int>(cell / lattice_cols_);
+    for (const IncomingStep& in : incoming_[2 * it + moving]) {
+      const StepClass& step = forward_classes_[2 * in.stance_itheta + moving][in.index];
+      const int fx = tx - step.dix, fy = ty - step.diy;
+      if (fx < 0 || fy < 0 || fx >= lattice_cols_ || fy >= lattice_rows_) continue;
+      const std::size_t f = (static_cast<std::size_t>(fy) * lattice_cols_ + fx) * d + in.stance_itheta;
+      const std::size_t j = f * 2 + (1 - moving);
+      if (dist[j] <= value || !supported[f]) continue;
+      double cost;
+      const double dz = height[t] - height[f];
+      if (dz == 0.0 && !has_obstacles) {
+        // The common case, inlined: a level step whose cost is memoised for this friction.
+        const double mu = std::min(friction[f], friction[t]);
+        std::size_t slot = 0;
+        while (slot < memo_friction_.size() && memo_friction_[slot] != mu) ++slot;
+        const double memo = slot < memo_friction_.size()
+                                ? memo_cost_[slot][class_offset_[2 * in.stance_itheta + moving] + in.index]
+                                : std::numeric_limits<double>::quiet_NaN();
+        cost = std::isnan(memo) ? RelaxedStepCost(LatticeFoot{fx, fy, in.stance_itheta}, moving, in.index, step) : memo;
+      } else if (dz < reach.dz_min - kTolerance || dz > reach.dz_max + kTolerance) {
+        continue;
+      } else {
+        cost = RelaxedStepCost(LatticeFoot{fx, fy, in.stance_itheta}, moving, in.index, step);
+      }
+      const double candidate = value + cost;
+      if (candidate < dist[j]) {
+        dist[j] = candidate;
+        queue.emplace(candidate, j);
+      }
+    }
+  }
 }
 
 template <class LinkCost>

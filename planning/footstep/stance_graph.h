@@ -39,6 +39,20 @@ namespace cairn::planning {
 /// more tightly on open ground, because a stride has none of the lateral zig-zag of single steps. The heuristic is
 /// the larger of the two.
 ///
+/// A third, much tighter bound is exact but for one relaxation: a backward Dijkstra search from the goal over
+/// single footholds (position, yaw and side of the newer foot), linked by every step the stance graph could take
+/// from that foothold, each priced by the step cost model itself. Only the friction under the older foot is
+/// dropped (the step is priced under the smaller friction of its other two feet, which can only make it
+/// cheaper), so on level ground of one friction it is the true cost to go of the newer foot's chain (steps up or
+/// down are priced by the model's lower bound over 0.1 mm of height, MinCostOverHeights(), so that the rounding
+/// of the terrain's heights does not make every slope step a new one to price). It is computed
+/// once per goal, terrain and friction setting (for lattices of at most kMaxExactFootholds footholds) and makes
+/// the optimal search expand little more than the optimal plan's stances. The heuristic is the largest of the
+/// bounds computed; the stride bound is computed only for lattices too large for the exact one (below that size
+/// it never exceeded the exact bound on the shipped scenarios, and its Dijkstra with long links is costly). The
+/// exact bound is scaled by (1 - 1e-9) so that rounding differences between its sums and the search's never make
+/// it overestimate.
+///
 /// Footholds are evaluated once and cached. Satisfies the Graph requirements of AraStar().
 class StanceGraph {
  public:
@@ -61,6 +75,11 @@ class StanceGraph {
 
   using Clock = std::chrono::steady_clock;
 
+  /// Largest lattice (positions x yaws) for which the exact foothold-chain bound is computed: it keeps two
+  /// doubles per foothold (one per side) and, while computing them, about as much again (about 130 MB at this
+  /// size). Larger lattices use the relaxed bounds alone.
+  static constexpr double kMaxExactFootholds = 4e6;
+
   /// The references must outlive the graph. Throws std::invalid_argument for a lattice the terrain cannot hold
   /// (more than 4096 positions per axis) or bad options, and TimeLimitReached when the heuristic's precomputation
   /// (every foothold of the lattice, then two Dijkstra searches) is still running at `deadline`.
@@ -76,6 +95,15 @@ class StanceGraph {
     deadline_ = deadline;
     ComputeChainDistances();
   }
+
+  /// Evaluates again every foothold whose sole may touch a terrain cell in columns [col0, col1] and rows
+  /// [row0, row1], after the terrain the graph refers to has changed there. The heuristic is not recomputed: it
+  /// stays admissible when the change only raised step costs (less friction, ground or walkability removed, new
+  /// obstacles), since every step cost can then only have grown; FootstepReplanner::UpdateTerrain() checks that.
+  void RefreshFootholds(int col0, int row0, int col1, int row1);
+
+  /// Whether steps ignore friction (set_ignore_friction()).
+  bool ignores_friction() const { return ignore_friction_; }
 
   /// The nearest lattice foothold to `pose` (false when outside the lattice).
   bool Snap(const FootPose& pose, LatticeFoot* foot) const;
@@ -103,7 +131,33 @@ class StanceGraph {
   /// `side` (infinity when none exists); see the class comment.
   double ChainDistanceToGoal(const LatticeFoot& foot, FootSide side);
 
+  /// The exact foothold-chain bound (see the class comment) for `foot` as the newer foot of `side`: a lower
+  /// bound on the cost of every plan from a stance whose newer foot it is (infinity when none exists; 0 when the
+  /// lattice is too large for it).
+  double FootholdChainDistance(const LatticeFoot& foot, FootSide side) const;
+
  private:
+  // A step the lattice allows from a stance foot of one yaw: the target's offset in lattice positions, its yaw
+  // bins turned (outward, >= 0), and the displacement in the stance foot's frame (dz filled in per step).
+  struct StepClass {
+    int dix{0};
+    int diy{0};
+    int k{0};
+    StepDisplacement d;
+  };
+  // The steps into a target: class `index` of forward_classes_[stance yaw][moving side].
+  struct IncomingStep {
+    int stance_itheta{0};
+    int index{0};
+  };
+  void BuildStepClasses();
+  void ComputeFootholdChainDistances();
+  // Cost of the relaxed step from foothold `from` (the newer foot) by `step` under the friction of the two
+  // footholds, or infinity when the step does not exist.
+  double RelaxedStepCost(const LatticeFoot& from, int moving, int class_index, const StepClass& step);
+  std::size_t FootholdIndex(const LatticeFoot& foot) const {
+    return (static_cast<std::size_t>(foot.iy) * lattice_cols_ + foot.ix) * options_.orientations + foot.itheta;
+  }
   void GenerateSuccessors(Key key, std::vector<std::pair<Key, double>>* out);
   // Prices the move of the older foot to `target`; false when the edge does not exist.
   bool EvaluateStep(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side, const LatticeFoot& target,
@@ -140,10 +194,27 @@ class StanceGraph {
   int lattice_rows_;
   bool ignore_friction_{false};
   Clock::time_point deadline_;
-  std::unordered_map<std::uint32_t, Foothold> footholds_;
+  // Every foothold of the lattice, indexed by FootholdIndex(), evaluated on first use.
+  std::vector<Foothold> footholds_;
+  std::vector<char> foothold_evaluated_;
+  // forward_classes_[itheta * 2 + moving side]: the steps from a stance foot of that yaw (side 0: left moves).
+  std::vector<std::vector<StepClass>> forward_classes_;
+  // incoming_[itheta * 2 + moving side]: the steps landing with that yaw.
+  std::vector<std::vector<IncomingStep>> incoming_;
+  // Memoised costs of steps with dz == 0: per friction value seen, one entry per step class (NaN: not yet).
+  std::vector<double> memo_friction_;
+  std::vector<std::vector<double>> memo_cost_;
+  // Memoised lower bounds of other steps, per (class, friction, height bucket); see RelaxedStepCost().
+  std::unordered_map<std::uint64_t, double> memo_height_cost_;
+  // Per friction value and class: the last height bucket looked up and its bound.
+  std::vector<std::vector<std::pair<double, double>>> memo_last_height_;
+  std::vector<std::size_t> class_offset_;  // first memo slot of forward_classes_[i]
+  // Per foothold index * 2 + side: the exact foothold-chain bound; empty when the lattice is too large.
+  std::vector<double> foothold_distance_;
   // Per lattice position, for the left (0) and right (1) goal foothold; filled by ComputeChainDistances().
   std::vector<double> chain_distance_[2];
-  // Per lattice position: cost of the cheapest relaxed chain of strides of one foot to its goal foothold.
+  // Per lattice position: cost of the cheapest relaxed chain of strides of one foot to its goal foothold (0 when
+  // the exact foothold-chain bound replaces it).
   std::vector<double> stride_distance_[2];
   // cos and sin of yaw at half-bin steps: index 2 * itheta (+1 for the half bin after it).
   std::vector<double> half_bin_cos_;

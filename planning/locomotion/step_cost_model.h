@@ -120,6 +120,14 @@ class StepCostModel {
     return do_stride_cost_lower_bound(mu_allowed);
   }
 
+  /// A lower bound on Evaluate(d', mu_allowed).cost over every feasible d' that equals `d` but for a height dz in
+  /// [dz_lo, dz_hi] (infinity: no such d' is feasible). A heuristic can price steps whose heights differ only by
+  /// the rounding of the terrain's heights once for the whole range. The default, valid for every model, is the
+  /// friction bound of cost_lower_bound() at d's horizontal length.
+  double MinCostOverHeights(const StepDisplacement& d, double dz_lo, double dz_hi, double mu_allowed) const {
+    return DoMinCostOverHeights(d, dz_lo, dz_hi, mu_allowed);
+  }
+
   /// The box of displacements the model can evaluate; steps outside it are infeasible.
   const StepReach& reach() const { return do_reach(); }
 
@@ -143,6 +151,12 @@ class StepCostModel {
     out.stride = {0.0, 2.0 * longest};
     out.cost = {2.0 * b.per_step, 2.0 * b.per_step + 2.0 * longest * b.per_metre};
     return out;
+  }
+  virtual double DoMinCostOverHeights(const StepDisplacement& d, double /*dz_lo*/, double /*dz_hi*/,
+                                      double mu_allowed) const {
+    const StepCostLowerBound b = cost_lower_bound(mu_allowed);
+    if (!b.any_feasible) return std::numeric_limits<double>::infinity();
+    return b.per_step + b.per_metre * std::hypot(d.dx, d.dy);
   }
   virtual const StepReach& do_reach() const = 0;
   virtual std::string do_description() const = 0;

@@ -397,6 +397,25 @@ TransitionCost TransitionOracle::DoEvaluate(const StepDisplacement& d, double mu
   return result;
 }
 
+double TransitionOracle::DoMinCostOverHeights(const StepDisplacement& d, double dz_lo, double dz_hi,
+                                              double mu_allowed) const {
+  double best = std::numeric_limits<double>::infinity();
+  StepDisplacement at = d;
+  auto consider = [&](double dz) {
+    at.dz = dz;
+    const TransitionCost cost = DoEvaluate(at, mu_allowed);
+    if (cost.feasible) best = std::min(best, cost.cost);
+  };
+  consider(dz_lo);
+  if (dz_hi > dz_lo) {
+    consider(dz_hi);
+    for (double knot : grid_.dz) {
+      if (knot > dz_lo && knot < dz_hi) consider(knot);
+    }
+  }
+  return best;
+}
+
 std::string TransitionOracle::do_description() const {
   return "transition oracle for " + robot_name_ + ", objective " + to_string(objective_) + ", " +
          cairn::FormatShort(entries_.size()) + " entries (" + cairn::FormatShort(num_feasible()) + " feasible) over " +

@@ -118,6 +118,8 @@ class TransitionOracle final : public StepCostModel {
  private:
   TransitionOracle() = default;
   TransitionCost DoEvaluate(const StepDisplacement& d, double mu_allowed) const override;
+  // Exact: the interpolation is linear in dz between grid values, so the minimum lies at an end or a grid value.
+  double DoMinCostOverHeights(const StepDisplacement& d, double dz_lo, double dz_hi, double mu_allowed) const override;
   double do_min_cost_per_metre() const override { return min_cost_per_metre_; }
   double do_min_cost_per_step() const override { return min_cost_per_step_; }
   StepCostLowerBound do_cost_lower_bound(double mu_allowed) const override;

@@ -71,14 +71,15 @@ class DeterminismTest : public ::testing::Test {
 TEST_F(DeterminismTest, PlanWritesTheSameJsonAndPictureOnEveryRun) {
   cairn::planning::test::SharedOracle(cairn::planning::WalkingObjective::kComWorkPlusHeat);
   // The shipped flat scenario with an expansion budget instead of its time limit: the search then stops at the
-  // same point on any machine and under any load (the generous time limit is never reached).
+  // same point on any machine and under any load (the generous time limit is never reached). 60 expansions stop
+  // it before it proves the optimum (it needs 91).
   std::istringstream shipped(ReadBytes(kScenarios + "flat.yaml"));
   std::ofstream scenario(dir_ / "flat.yaml");
   std::string line;
   int replaced = 0;
   while (std::getline(shipped, line)) {
     if (line.rfind("planner:", 0) == 0) {
-      line = "planner: {time_limit: 600, max_expansions: 2000}";
+      line = "planner: {time_limit: 600, max_expansions: 60}";
       ++replaced;
     }
     scenario << line << "\n";
@@ -90,7 +91,7 @@ TEST_F(DeterminismTest, PlanWritesTheSameJsonAndPictureOnEveryRun) {
     const CairnRun result = RunCairn("plan --scenario " + (dir_ / "flat.yaml").string() + " --oracle-cache " +
                                      kOracleCache + " --out " + (dir_ / run).string());
     ASSERT_EQ(result.exit_code, 0) << result.output;
-    ASSERT_THAT(result.output, ::testing::HasSubstr("2000 expansions"));
+    ASSERT_THAT(result.output, ::testing::HasSubstr(" 60 expansions"));
   }
   const std::string png_a = ReadBytes(dir_ / "a" / "plan.png");
   ASSERT_GT(png_a.size(), 1000u);

@@ -24,6 +24,7 @@
 #include "cairn/planning/footstep/footstep_plan.h"
 #include "cairn/planning/footstep/footstep_planner.h"
 #include "cairn/planning/footstep/footstep_planner_options.h"
+#include "cairn/planning/footstep/footstep_replanner.h"
 #include "cairn/planning/footstep/plan_footsteps.h"
 #include "cairn/planning/footstep/refine_footstep_plan.h"
 #include "cairn/planning/footstep/terrain_map.h"
@@ -474,6 +475,9 @@ void DefinePlanning(py::module_ m) {
                                                             "heuristic and the reach.")
       .def("Evaluate", &StepCostModel::Evaluate, py::arg("d"), py::arg("mu_allowed"),
            "Minimum-cost step with displacement d and RCOF <= mu_allowed.")
+      .def("MinCostOverHeights", &StepCostModel::MinCostOverHeights, py::arg("d"), py::arg("dz_lo"), py::arg("dz_hi"),
+           py::arg("mu_allowed"),
+           "Lower bound on the cost of step d with its height anywhere in [dz_lo, dz_hi] (inf: none is feasible).")
       .def("min_cost_per_metre", &StepCostModel::min_cost_per_metre, "Lower bound of cost per metre.")
       .def("min_cost_per_step", &StepCostModel::min_cost_per_step, "Fixed cost every step pays.")
       .def("reach", &StepCostModel::reach, "Evaluable displacements.")
@@ -538,6 +542,20 @@ void DefinePlanning(py::module_ m) {
   m.def("PlanFootsteps", &PlanFootsteps, py::arg("terrain"), py::arg("start"), py::arg("goal"), py::arg("cost_model"),
         py::arg("geometry"), py::arg("options"), py::call_guard<py::gil_scoped_release>(),
         "ARA* footstep planning with step timing (without the GIL); returns a FootstepPlan (found or with a reason).");
+  py::class_<FootstepReplanner>(m, "FootstepReplanner",
+                                "PlanFootsteps to one goal over one terrain from starts that change as the robot "
+                                "walks, reusing the heuristic's precomputation after the first Plan().")
+      .def(py::init([](const TerrainMap& terrain, const StanceGoal& goal, std::shared_ptr<StepCostModel> cost_model,
+                       const BipedGeometry& geometry, const FootstepPlannerOptions& options) {
+             return std::make_unique<FootstepReplanner>(terrain, goal, std::move(cost_model), geometry, options);
+           }),
+           py::arg("terrain"), py::arg("goal"), py::arg("cost_model"), py::arg("geometry"), py::arg("options"),
+           "Keeps a copy of the terrain.")
+      .def("Plan", &FootstepReplanner::Plan, py::arg("start"), py::call_guard<py::gil_scoped_release>(),
+           "The plan PlanFootsteps would return from `start` (without the GIL).")
+      .def("UpdateTerrain", &FootstepReplanner::UpdateTerrain, py::arg("terrain"),
+           "Replaces the terrain (same grid); True when the precomputation is kept (the change only raised costs).")
+      .def("prepared", &FootstepReplanner::prepared, "Whether the heuristic's precomputation is done.");
   m.def(
       "RefineFootstepPlan",
       [](const WalkingModel& model, WalkingObjective objective, FootstepPlan& plan) {

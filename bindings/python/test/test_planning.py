@@ -84,6 +84,47 @@ def test_footstep_planner_system_matches_the_function(walking_model, oracle):
     assert ours == theirs
 
 
+def test_footstep_replanner_matches_plan_footsteps(walking_model, oracle):
+    scenario = planning.FootstepScenario.Load(ICE)
+    terrain = scenario.BuildTerrain()
+    geometry = planning.BipedGeometry()
+    options = budgeted(scenario.planner())
+    replanner = planning.FootstepReplanner(terrain, scenario.goal(), oracle, geometry, options)
+    assert not replanner.prepared()
+    first = replanner.Plan(scenario.start())
+    assert first.found and replanner.prepared()
+    start = first.StanceAfter(0)
+    again = replanner.Plan(start)
+    direct = planning.PlanFootsteps(terrain, start, scenario.goal(), oracle, geometry, options)
+    assert again.found and again.cost == direct.cost
+    assert len(again.steps) == len(first.steps) - 1
+    # Less friction everywhere only raises costs: the precomputation is kept and the plan stays optimal.
+    slippery = scenario.BuildTerrain()
+    for row in range(slippery.rows()):
+        for col in range(slippery.cols()):
+            if slippery.walkable(col, row):
+                slippery.SetCell(col, row, slippery.height(col, row), np.array([0.0, 0.0, 1.0]),  # level ground
+                                 min(slippery.friction(col, row), 0.3))
+    assert replanner.UpdateTerrain(slippery) and replanner.prepared()
+    assert replanner.Plan(start).cost == pytest.approx(
+        planning.PlanFootsteps(slippery, start, scenario.goal(), oracle, geometry, options).cost, abs=1e-6)
+    with pytest.raises(ValueError, match="cost model is null"):
+        planning.FootstepReplanner(terrain, scenario.goal(), None, geometry, options)
+
+
+def test_min_cost_over_heights(oracle):
+    d = planning.StepDisplacement(dx=0.25, dy=0.2)
+    costs = []
+    for dz in np.linspace(0.0, 0.04, 9):
+        step = oracle.Evaluate(planning.StepDisplacement(dx=0.25, dy=0.2, dz=float(dz)), 1.0)
+        assert step.feasible
+        costs.append(step.cost)
+    bound = oracle.MinCostOverHeights(d, 0.0, 0.04, 1.0)
+    assert bound <= min(costs) * (1 + 1e-12)
+    assert bound >= min(costs) * (1 - 1e-12)  # the oracle's bound is the exact minimum
+    assert oracle.MinCostOverHeights(d, 1.0, 1.1, 1.0) == float("inf")  # beyond the reach
+
+
 def test_values_and_errors(walking_model, oracle):
     pose = planning.FootPose(x=1.0, y=2.0, theta=0.5)
     assert pickle.loads(pickle.dumps(pose)).to_dict() == {"x": 1.0, "y": 2.0, "z": 0.0, "theta": 0.5}

@@ -1,8 +1,10 @@
 #include "cairn/planning/locomotion/transition_oracle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -134,6 +136,42 @@ TEST_F(TransitionOracleTest, InterpolatesAndBoundsCostPerMetre) {
   if (slippery.any_feasible) {
     EXPECT_GE(slippery.per_step + 0.3 * slippery.per_metre, grippy.per_step + 0.3 * grippy.per_metre);
   }
+}
+
+// MinCostOverHeights is the exact minimum over the height range: the interpolation is linear in dz between grid
+// values, so dense samples never go below it and its value is attained at an end or a grid value.
+TEST_F(TransitionOracleTest, MinCostOverHeightsIsTheMinimumOverTheRange) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int compared = 0;
+  for (int i = 0; i < 200; ++i) {
+    const StepDisplacement d{0.15 + 0.1 * u(rng), 0.18 + 0.06 * u(rng), 0.0, 0.5 * u(rng)};
+    const double mu = 0.06 + 1.5 * u(rng);
+    const double lo = -0.01 + 0.06 * u(rng), hi = std::min(0.05, lo + 0.04 * u(rng));
+    const double bound = oracle_->MinCostOverHeights(d, lo, hi, mu);
+    double sampled = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= 100; ++k) {
+      StepDisplacement at = d;
+      at.dz = lo + (hi - lo) * k / 100.0;
+      const TransitionCost c = oracle_->Evaluate(at, mu);
+      if (c.feasible) sampled = std::min(sampled, c.cost);
+    }
+    StepDisplacement knot = d;  // the grid's dz value 0 inside the range
+    knot.dz = 0.0;
+    const TransitionCost at_knot = oracle_->Evaluate(knot, mu);
+    if (lo < 0.0 && hi > 0.0 && at_knot.feasible) sampled = std::min(sampled, at_knot.cost);
+    if (std::isinf(sampled)) {
+      EXPECT_TRUE(std::isinf(bound)) << "nothing in the range is feasible";
+      continue;
+    }
+    ++compared;
+    EXPECT_LE(bound, sampled * (1.0 + 1e-12));
+    EXPECT_GE(bound, sampled * (1.0 - 1e-12)) << "the bound is the minimum, not below it";
+  }
+  EXPECT_GT(compared, 50);
+  // A single height is that step's cost.
+  const StepDisplacement d{0.2, 0.21, 0.02, 0.25};
+  EXPECT_EQ(oracle_->MinCostOverHeights(d, 0.02, 0.02, 1.0), oracle_->Evaluate(d, 1.0).cost);
 }
 
 TEST_F(TransitionOracleTest, SavesLoadsAndIsThreadCountIndependent) {
