@@ -33,6 +33,8 @@ constexpr int kTerrainGroup = 1 << 7;
 // Bullet's default convex margin is 4 cm, more than half a 3 cm sole plate; boxes and cylinders keep their outer
 // size and get 1 mm rounded edges instead.
 constexpr double kShapeMargin = 1e-3;
+// Allowed resting penetration (m).
+constexpr double kLinearSlop = 1e-4;
 // Bullet's joint-velocity clamp (default 100 rad/s) would be a hidden nonlinearity; this one is never reached by
 // a robot.
 constexpr double kMaxCoordinateVelocity = 1e6;
@@ -411,6 +413,10 @@ BulletPlant::BulletPlant(const Model& model, const std::vector<TerrainBox>& terr
   info.m_numIterations = options.solver_iterations;
   // Two friction directions per contact: with one, a resting contact is held along one arbitrary direction only.
   info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+  // Resting contacts settle kLinearSlop deep instead of at zero depth, where Bullet's box-box detector drops a
+  // sole's contacts for a step now and then (the foot then falls a few micrometres and is caught by a doubled
+  // impulse on the next step).
+  info.m_linearSlop = kLinearSlop;
   s.BuildMultiBody();
   if (options.contacts) {
     s.BuildColliders();
@@ -427,6 +433,13 @@ const Model& BulletPlant::model() const { return impl_->model; }
 const std::vector<TerrainBox>& BulletPlant::terrain() const { return impl_->terrain; }
 const BulletPlantOptions& BulletPlant::options() const { return impl_->options; }
 int BulletPlant::num_links() const { return static_cast<int>(impl_->body_of_link.size()); }
+int BulletPlant::merged_body(int body) const {
+  if (body < 0 || body >= impl_->model.num_bodies()) {
+    throw std::invalid_argument("BulletPlant: body index " + FormatShort(body) + " is outside [0, " +
+                                FormatShort(impl_->model.num_bodies() - 1) + "]");
+  }
+  return impl_->owner[static_cast<std::size_t>(body)];
+}
 double BulletPlant::time() const { return static_cast<double>(impl_->steps) * impl_->options.time_step; }
 const std::vector<ContactPoint>& BulletPlant::contacts() const { return impl_->contacts; }
 

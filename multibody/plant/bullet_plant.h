@@ -48,6 +48,9 @@ class BulletPlant {
   const BulletPlantOptions& options() const;
   /// Number of Bullet links (moving joints below the base).
   int num_links() const;
+  /// The moving body (or 0, the world, for a welded base) that body `body` is merged into through fixed joints:
+  /// the `body` of the ContactPoint of any of its shapes. Throws std::invalid_argument for an unknown index.
+  int merged_body(int body) const;
   /// Simulated time (s): the number of steps times the step.
   double time() const;
 
