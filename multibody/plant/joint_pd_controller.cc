@@ -101,6 +101,15 @@ Eigen::VectorXd JointPdController::Torques(const Eigen::Ref<const Eigen::VectorX
                                            const Eigen::Ref<const Eigen::VectorXd>& v,
                                            const Eigen::Ref<const Eigen::VectorXd>& q_ref,
                                            const Eigen::Ref<const Eigen::VectorXd>& v_ref) const {
+  return Torques(q, v, q_ref, v_ref, Eigen::VectorXd::Zero(nv_));
+}
+
+Eigen::VectorXd JointPdController::Torques(const Eigen::Ref<const Eigen::VectorXd>& q,
+                                           const Eigen::Ref<const Eigen::VectorXd>& v,
+                                           const Eigen::Ref<const Eigen::VectorXd>& q_ref,
+                                           const Eigen::Ref<const Eigen::VectorXd>& v_ref,
+                                           const Eigen::Ref<const Eigen::VectorXd>& feedforward) const {
+  CheckVector(feedforward, nv_, "feedforward");
   CheckVector(q, nq_, "q");
   CheckVector(v, nv_, "v");
   CheckVector(q_ref, nq_, "q_ref");
@@ -109,7 +118,7 @@ Eigen::VectorXd JointPdController::Torques(const Eigen::Ref<const Eigen::VectorX
   for (int iv = 0; iv < nv_; ++iv) {
     const int iq = q_index_[static_cast<std::size_t>(iv)];
     if (iq < 0) continue;
-    const double t = kp_[iv] * (q_ref[iq] - q[iq]) + kd_[iv] * (v_ref[iv] - v[iv]);
+    const double t = kp_[iv] * (q_ref[iq] - q[iq]) + kd_[iv] * (v_ref[iv] - v[iv]) + feedforward[iv];
     tau[iv] = std::clamp(t, -effort_[iv], effort_[iv]);
   }
   return tau;

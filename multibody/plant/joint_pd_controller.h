@@ -36,6 +36,10 @@ class JointPdController {
   Eigen::VectorXd Torques(const Eigen::Ref<const Eigen::VectorXd>& q, const Eigen::Ref<const Eigen::VectorXd>& v,
                           const Eigen::Ref<const Eigen::VectorXd>& q_ref,
                           const Eigen::Ref<const Eigen::VectorXd>& v_ref) const;
+  /// As above with a feedforward torque (size nv) added to the PD torque before saturation.
+  Eigen::VectorXd Torques(const Eigen::Ref<const Eigen::VectorXd>& q, const Eigen::Ref<const Eigen::VectorXd>& v,
+                          const Eigen::Ref<const Eigen::VectorXd>& q_ref, const Eigen::Ref<const Eigen::VectorXd>& v_ref,
+                          const Eigen::Ref<const Eigen::VectorXd>& feedforward) const;
 
  private:
   int nq_ = 0;
