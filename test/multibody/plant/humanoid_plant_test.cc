@@ -100,13 +100,18 @@ StandRun Stand(double theta, double mu, double lift, int steps) {
 TEST(HumanoidPlantTest, StandsTenSecondsWithoutDriftSlipOrFall) {
   const StandRun run = Stand(0.0, 1.0, 0.0, 10000);
   // Drift: base displacement between t = 1 s (after the PD offsets have settled) and t = 10 s; stated limit 1 mm.
-  // Measured 0.94 mm: a slow, lightly damped fore-aft sway of the pelvis over the planted feet (the soles
-  // themselves move less than 10 micrometres horizontally, checked below), not sliding.
+  // Measured 0.94 mm. It is not sliding (the soles move less than 10 micrometres horizontally, checked below) but
+  // the robot swaying on its ankles: the inverted-pendulum mode of the ankle PD (kp 2 x 1000 against m g h ~ 500
+  // N m/rad, about 41 kg m^2 about the ankles: period ~1 s) has a damping ratio of only ~0.04 with kd = 2 x 10,
+  // and the sag into the PD offsets at the start excites it; its amplitude decays from ~1.3 mm to ~0.3 mm over
+  // the 10 s, so the largest excursion from the t = 1 s position is 2.4 mm (sampled every 0.1 s; bounded at 3 mm).
   const Eigen::Vector3d settled = run.q[9].head<3>();
-  const Eigen::Vector3d final_position = run.q.back().head<3>();
-  const double drift = (final_position - settled).norm();
+  const double drift = (run.q.back().head<3>() - settled).norm();
   RecordProperty("drift_m", std::to_string(drift));
-  RecordProperty("electrical_energy_J", std::to_string(run.electrical_energy));
+  double excursion = 0.0;
+  for (std::size_t i = 9; i < run.q.size(); ++i) excursion = std::max(excursion, (run.q[i].head<3>() - settled).norm());
+  EXPECT_LT(excursion, 3e-3);
+  RecordProperty("excursion_m", std::to_string(excursion));
   EXPECT_LT(drift, 1e-3);
   EXPECT_TRUE(run.slips.empty());
   EXPECT_LT(run.sole_travel, 1e-5);
