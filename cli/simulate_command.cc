@@ -1,5 +1,5 @@
-// `cairn simulate`: the humanoid standing (or dropped) in the Bullet plant under joint PD control, on flat ground
-// or a scenario's terrain boxes; prints a summary and writes a log (CSV), a summary (JSON) and a plot (PNG) of the
+// `cairn simulate`: the humanoid standing (or dropped, or following a joint trajectory file) in the Bullet plant
+// under joint PD control, on flat ground or a scenario's terrain boxes; prints a summary and writes a log (CSV), a summary (JSON) and a plot (PNG) of the
 // contact forces and the base height.
 
 #include <cmath>
@@ -23,11 +23,13 @@
 #include "cairn/multibody/plant/humanoid_plant.h"
 #include "cairn/multibody/plant/joint_drive.h"
 #include "cairn/multibody/plant/joint_pd_controller.h"
+#include "cairn/multibody/plant/joint_trajectory.h"
 #include "cairn/multibody/plant/plant_scenario.h"
 #include "cairn/multibody/urdf_parser.h"
 #include "cairn/systems/analysis/simulator.h"
 #include "cairn/systems/framework/diagram_builder.h"
 #include "cairn/systems/primitives/constant_vector_source.h"
+#include "cairn/systems/primitives/function_system.h"
 #include "command_registry.h"
 #include "file_checks.h"
 #include "numeric_option.h"
@@ -47,6 +49,7 @@ struct SimulateArguments {
   std::string control = std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid_control.yaml";
   std::string walking = std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid_walking.yaml";
   std::string scenario;
+  std::string trajectory;
   std::string out;
   double duration = 2.0;
   double step = 1e-3;
@@ -132,6 +135,7 @@ int Run(const SimulateArguments& args) {
   CheckInputFile("--control", args.control, "a control YAML file");
   CheckInputFile("--walking", args.walking, "a walking-model YAML file");
   if (!args.scenario.empty()) CheckInputFile("--scenario", args.scenario, "a plant scenario YAML file");
+  if (!args.trajectory.empty()) CheckInputFile("--trajectory", args.trajectory, "a joint trajectory CSV file");
   std::optional<AtomicOutputDirectory> out;
   if (!args.out.empty()) out.emplace(args.out, IsSimulateOutput);
 
@@ -171,10 +175,25 @@ int Run(const SimulateArguments& args) {
 
   systems::DiagramBuilder builder;
   auto* plant = builder.AddNamedSystem<HumanoidPlant>("plant", model, terrain, pd, q0, options);
-  Eigen::VectorXd reference = Eigen::VectorXd::Zero(model.nq() + model.nv());
-  reference.head(model.nq()) = q0;
-  auto* source = builder.AddNamedSystem<systems::ConstantVectorSource>("reference", reference);
-  builder.Connect(source->get_output_port(0), plant->GetInputPort("reference"));
+  if (args.trajectory.empty()) {
+    Eigen::VectorXd reference = Eigen::VectorXd::Zero(model.nq() + model.nv());
+    reference.head(model.nq()) = q0;
+    auto* source = builder.AddNamedSystem<systems::ConstantVectorSource>("reference", reference);
+    builder.Connect(source->get_output_port(0), plant->GetInputPort("reference"));
+  } else {
+    // The file's joints follow the trajectory; the others hold the standing posture.
+    const auto trajectory = std::make_shared<const JointTrajectory>(JointTrajectory::LoadCsv(model, args.trajectory));
+    const int nq = model.nq(), nv = model.nv();
+    auto* source = builder.AddNamedSystem<systems::FunctionSystem>(
+        "reference", 0, nq + nv, [trajectory, q0, nq, nv](double t, const Eigen::VectorXd&) {
+          Eigen::VectorXd q, v;
+          trajectory->Evaluate(t, q0, &q, &v);
+          Eigen::VectorXd reference(nq + nv);
+          reference << q, v;
+          return reference;
+        });
+    builder.Connect(source->get_output_port(0), plant->GetInputPort("reference"));
+  }
   auto diagram = builder.Build();
   systems::Simulator simulator(*diagram);
 
@@ -267,7 +286,7 @@ int Run(const SimulateArguments& args) {
 }  // namespace
 
 void RegisterSimulateCommand(CommandRegistry* registry) {
-  registry->Add("simulate", "Simulate the humanoid standing in the Bullet plant under joint PD control",
+  registry->Add("simulate", "Simulate the humanoid in the Bullet plant under joint PD control (standing or a trajectory)",
                 [](CLI::App& app) -> CommandAction {
                   auto args = std::make_shared<SimulateArguments>();
                   app.add_option("--robot", args->robot, "Robot URDF (floating base)")->capture_default_str();
@@ -276,6 +295,8 @@ void RegisterSimulateCommand(CommandRegistry* registry) {
                       ->capture_default_str();
                   app.add_option("--scenario", args->scenario,
                                  "Plant scenario YAML (terrain boxes with friction; docs/simulate.md)");
+                  app.add_option("--trajectory", args->trajectory,
+                                 "Joint trajectory CSV (time,<joint>,...; docs/simulate.md) instead of standing still");
                   AddNumberOption(app, "--duration", &args->duration, "Simulated time [s]",
                                   NumberRange::AboveAtMost(0.0, kMaxDuration));
                   AddNumberOption(app, "--step", &args->step, "Plant time step [s]",
