@@ -17,6 +17,8 @@
 #include "cairn/multibody/plant/humanoid_plant.h"
 #include "cairn/multibody/plant/joint_drive.h"
 #include "cairn/multibody/plant/joint_pd_controller.h"
+#include "cairn/multibody/plant/joint_trajectory.h"
+#include "cairn/multibody/plant/plant_scenario.h"
 #include "system_support.h"
 
 namespace cairn::python {
@@ -146,6 +148,24 @@ void DefineMultibodyPlant(py::module_ m) {
            }),
            py::arg("model"), py::arg("terrain"), py::arg("controller"), py::arg("initial_q"),
            py::arg("options") = HumanoidPlantOptions(), "Builds the plant; the initial velocity is zero.");
+
+  py::class_<PlantScenario>(m, "PlantScenario", "A plant scenario file: terrain boxes with friction, drop height.")
+      .def_static("Load", &PlantScenario::Load, py::arg("path"), "Reads and validates a scenario YAML.")
+      .def_readonly("terrain", &PlantScenario::terrain, "The terrain boxes.")
+      .def_readonly("drop_height", &PlantScenario::drop_height, "Start height of the soles above z = 0 (m).");
+
+  py::class_<JointTrajectory>(m, "JointTrajectory", "A joint reference from a CSV file (time,<joint>,...).")
+      .def_static("LoadCsv", &JointTrajectory::LoadCsv, py::arg("model"), py::arg("path"), "Reads and validates it.")
+      .def(
+          "Evaluate",
+          [](const JointTrajectory& self, double t, const Eigen::VectorXd& q_base) {
+            Eigen::VectorXd q, v;
+            self.Evaluate(t, q_base, &q, &v);
+            return py::make_tuple(q, v);
+          },
+          py::arg("t"), py::arg("q_base"), "The reference (q, v) at time t.")
+      .def("end_time", &JointTrajectory::end_time, "Time of the last row (s).")
+      .def("num_rows", &JointTrajectory::num_rows, "Number of rows.");
 
   RegisterConvertedAbstractValueType<std::vector<SoleState>>("SoleStates");
   RegisterConvertedAbstractValueType<std::vector<SlipEvent>>("SlipEvents");

@@ -124,3 +124,19 @@ def test_bad_input_is_refused(model):
     pd = mb.JointPdController.Load(model, CONTROL)
     with pytest.raises(ValueError, match="initial_q has size 3"):
         mb.HumanoidPlant(model, ground(0.8), pd, np.zeros(3))
+
+
+def test_scenario_and_trajectory_files(model, tmp_path):
+    scenario = mb.PlantScenario.Load(source_path("examples", "scenarios", "plant", "ice_and_carpet.yaml"))
+    assert [box.name for box in scenario.terrain] == ["ice", "carpet"]
+    assert scenario.terrain[0].friction == pytest.approx(0.1)
+    path = tmp_path / "wave.csv"
+    path.write_text("time,r_elbow\n0,0\n1,-1\n")
+    trajectory = mb.JointTrajectory.LoadCsv(model, str(path))
+    q, v = trajectory.Evaluate(0.5, mb.NeutralConfiguration(model))
+    elbow = model.joint(model.GetJointIndex("r_elbow"))
+    assert q[elbow.idx_q] == pytest.approx(-0.5)
+    assert v[elbow.idx_v] == pytest.approx(-1.0)
+    path.write_text("time,r_elbow\n0,5\n")
+    with pytest.raises(ValueError, match="outside its limits"):
+        mb.JointTrajectory.LoadCsv(model, str(path))
