@@ -14,6 +14,7 @@ void RegisterFrictionCommand(CommandRegistry* registry);
 void RegisterFrictionTrainCommand(CommandRegistry* registry);
 void RegisterFrictionDatasetCommand(CommandRegistry* registry);
 void RegisterPlanCommand(CommandRegistry* registry);
+void RegisterSimulateCommand(CommandRegistry* registry);
 
 void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPendulumCommand(registry);
@@ -25,6 +26,7 @@ void RegisterAllCommands(CommandRegistry* registry) {
   RegisterFrictionTrainCommand(registry);
   RegisterFrictionDatasetCommand(registry);
   RegisterPlanCommand(registry);
+  RegisterSimulateCommand(registry);
 }
 
 }  // namespace cairn::cli

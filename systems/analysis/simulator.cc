@@ -93,25 +93,36 @@ double Simulator::NextPeriodicEvents(double time, bool inclusive, std::vector<in
   return earliest;
 }
 
-void Simulator::ApplyUpdates(const std::vector<internal::TriggeredEvent>& timed) {
+EventStatus Simulator::ApplyUpdates(const std::vector<internal::TriggeredEvent>& timed) {
   std::vector<internal::TriggeredEvent> events;
   Split(timed, EventKind::kUnrestrictedUpdate, &events);
   Split(per_step_updates_, EventKind::kUnrestrictedUpdate, &events);
-  internal::ApplyUnrestrictedUpdates(events);
+  EventStatus status = internal::ApplyUnrestrictedUpdates(events);
   num_unrestricted_updates_ += static_cast<int64_t>(events.size());
+  if (status.failed()) return status;
   events.clear();
   Split(timed, EventKind::kDiscreteUpdate, &events);
   Split(per_step_updates_, EventKind::kDiscreteUpdate, &events);
-  internal::ApplyDiscreteUpdates(events);
+  status.KeepMoreSevere(internal::ApplyDiscreteUpdates(events));
   num_discrete_updates_ += static_cast<int64_t>(events.size());
+  return status;
 }
 
-void Simulator::Publish(const std::vector<internal::TriggeredEvent>& timed) {
+EventStatus Simulator::Publish(const std::vector<internal::TriggeredEvent>& timed) {
   std::vector<internal::TriggeredEvent> events;
   Split(timed, EventKind::kPublish, &events);
   events.insert(events.end(), per_step_publishes_.begin(), per_step_publishes_.end());
-  internal::DispatchPublishes(events);
   num_publishes_ += static_cast<int64_t>(events.size());
+  return internal::DispatchPublishes(events);
+}
+
+bool Simulator::StopsRun(const EventStatus& event_status, SimulatorStatus* status) const {
+  if (!event_status.stops()) return false;
+  status->reason = event_status.failed() ? SimulatorStatus::Reason::kEventHandlerFailed
+                                         : SimulatorStatus::Reason::kReachedTerminationCondition;
+  status->time = context_->get_time();
+  status->message = event_status.message();
+  return true;
 }
 
 bool Simulator::CallMonitor(SimulatorStatus* status) {
@@ -132,7 +143,7 @@ void Simulator::Initialize() {
   internal::CollectEvents(leaves_, TriggerType::kPerStep, EventKind::kDiscreteUpdate, &per_step_updates_);
   internal::CollectEvents(leaves_, TriggerType::kPerStep, EventKind::kPublish, &per_step_publishes_);
 
-  internal::ExecuteAll(leaves_, TriggerType::kInitialization);
+  initialization_status_ = internal::ExecuteAll(leaves_, TriggerType::kInitialization);
 
   // Periodic events due exactly now: their updates open the first step, their publishes happen now.
   std::vector<internal::TriggeredEvent> due;
@@ -145,7 +156,7 @@ void Simulator::Initialize() {
   } else {
     due.clear();
   }
-  Publish(due);
+  initialization_status_.KeepMoreSevere(Publish(due));
   initialized_ = true;
   wall_start_ = std::chrono::steady_clock::now();
   sim_start_ = t0;
@@ -219,6 +230,11 @@ SimulatorStatus Simulator::AdvanceTo(double t_final) {
   CheckStepBudget(t_final);
   if (!initialized_) Initialize();
   SimulatorStatus status;
+  // A stop reported by the initialization events ends the first AdvanceTo() at once.
+  if (StopsRun(initialization_status_, &status)) {
+    initialization_status_ = EventStatus::DidNothing();
+    return status;
+  }
   std::vector<internal::TriggeredEvent> due;
   int64_t steps_here = 0;
   while (context_->get_time() < t_final) {
@@ -231,8 +247,9 @@ SimulatorStatus Simulator::AdvanceTo(double t_final) {
     }
     ++steps_here;
     // The context may have been changed since the last step; the set of leaves cannot, the events can't either.
-    ApplyUpdates(pending_updates_);
+    const EventStatus updated = ApplyUpdates(pending_updates_);
     pending_updates_.clear();
+    if (StopsRun(updated, &status)) return status;
 
     const double t = context_->get_time();
     const double next_event = NextPeriodicEvents(t, /*inclusive=*/false, &due);
@@ -248,7 +265,8 @@ SimulatorStatus Simulator::AdvanceTo(double t_final) {
     if (!(hits_event && reached == t_target)) due.clear();
     Split(due, EventKind::kUnrestrictedUpdate, &pending_updates_);
     Split(due, EventKind::kDiscreteUpdate, &pending_updates_);
-    Publish(due);
+    const EventStatus published = Publish(due);
+    if (StopsRun(published, &status)) return status;
     PaceRealTime();
     if (CallMonitor(&status)) return status;
   }

@@ -23,7 +23,10 @@ struct MonitorResult {
 
 /// Why AdvanceTo() returned.
 struct SimulatorStatus {
-  enum class Reason { kReachedBoundaryTime, kReachedTerminationCondition };
+  /// kReachedTerminationCondition: the monitor stopped the run, or an event handler returned
+  /// EventStatus::ReachedTermination; kEventHandlerFailed: a handler returned EventStatus::Failed (the updates of
+  /// that step were not applied). `message` then says why, prefixed with the handler's system path.
+  enum class Reason { kReachedBoundaryTime, kReachedTerminationCondition, kEventHandlerFailed };
   Reason reason{Reason::kReachedBoundaryTime};
   double time{0.0};
   std::string message;
@@ -36,7 +39,8 @@ struct SimulatorStatus {
 /// per-step ones); (2) integration of the continuous state to the next periodic event time or the boundary,
 /// whichever is first (several integrator steps for fixed-step integrators); (3) publishes due at the new time;
 /// (4) the monitor. Initialize() runs initialization events and the publishes due at the initial time. Periodic
-/// events land exactly on offset + k * period.
+/// events land exactly on offset + k * period. An event handler that returns EventStatus::ReachedTermination or
+/// EventStatus::Failed ends AdvanceTo() after its group of events, which returns the status with its message.
 ///
 /// The default integrator is RK4 with a 1 ms maximum step.
 ///
@@ -98,8 +102,10 @@ class Simulator {
  private:
   // Periodic events due at the earliest time after (or, inclusive, at) `time`.
   double NextPeriodicEvents(double time, bool inclusive, std::vector<internal::TriggeredEvent>* due) const;
-  void ApplyUpdates(const std::vector<internal::TriggeredEvent>& timed);
-  void Publish(const std::vector<internal::TriggeredEvent>& timed);
+  EventStatus ApplyUpdates(const std::vector<internal::TriggeredEvent>& timed);
+  EventStatus Publish(const std::vector<internal::TriggeredEvent>& timed);
+  // Fills `status` and returns true if `event_status` stops the run.
+  bool StopsRun(const EventStatus& event_status, SimulatorStatus* status) const;
   bool CallMonitor(SimulatorStatus* status);
   void PaceRealTime();
   void CheckStepBudget(double t_final);
@@ -116,6 +122,7 @@ class Simulator {
   std::vector<internal::TriggeredEvent> per_step_updates_;
   std::vector<internal::TriggeredEvent> per_step_publishes_;
   std::vector<internal::TriggeredEvent> pending_updates_;  // Periodic updates due at the current time.
+  EventStatus initialization_status_ = EventStatus::DidNothing();  // What Initialize()'s events reported.
 
   std::chrono::steady_clock::time_point wall_start_;
   double sim_start_{0.0};

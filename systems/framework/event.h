@@ -3,6 +3,8 @@
 #include <functional>
 #include <string>
 
+#include "cairn/systems/framework/event_status.h"
+
 namespace cairn::systems {
 
 class Context;
@@ -30,14 +32,15 @@ struct PeriodicEventData {
   double offset{0.0};
 };
 
-/// An event declared by a leaf system: its trigger, its kind and the one handler matching that kind.
+/// An event declared by a leaf system: its trigger, its kind and the one handler matching that kind. Handlers
+/// return an EventStatus (LeafSystem wraps handlers that return void as succeeded).
 struct Event {
   TriggerType trigger{TriggerType::kForced};
   EventKind kind{EventKind::kPublish};
   PeriodicEventData periodic;
-  std::function<void(const Context&)> publish;
-  std::function<void(const Context&, DiscreteValues*)> discrete_update;
-  std::function<void(const Context&, State*)> unrestricted_update;
+  std::function<EventStatus(const Context&)> publish;
+  std::function<EventStatus(const Context&, DiscreteValues*)> discrete_update;
+  std::function<EventStatus(const Context&, State*)> unrestricted_update;
 };
 
 }  // namespace cairn::systems

@@ -20,16 +20,18 @@ void CollectEvents(const std::vector<LeafAndContext>& leaves, TriggerType trigge
 
 /// Runs unrestricted updates: every leaf's next state is computed from the current values of all contexts
 /// first, then all are applied, so the order of leaves does not matter. Several events of one leaf apply in
-/// declaration order to the same next state.
-void ApplyUnrestrictedUpdates(const std::vector<TriggeredEvent>& events);
+/// declaration order to the same next state. Returns the most severe status, its message prefixed with the
+/// system's path name; if any handler failed, no update is applied.
+EventStatus ApplyUnrestrictedUpdates(const std::vector<TriggeredEvent>& events);
 
 /// As ApplyUnrestrictedUpdates(), for discrete updates.
-void ApplyDiscreteUpdates(const std::vector<TriggeredEvent>& events);
+EventStatus ApplyDiscreteUpdates(const std::vector<TriggeredEvent>& events);
 
-/// Runs publish events in order.
-void DispatchPublishes(const std::vector<TriggeredEvent>& events);
+/// Runs publish events in order (all of them, whatever they report); returns the most severe status.
+EventStatus DispatchPublishes(const std::vector<TriggeredEvent>& events);
 
-/// Runs all events of one trigger in the order unrestricted updates, discrete updates, publishes.
-void ExecuteAll(const std::vector<LeafAndContext>& leaves, TriggerType trigger);
+/// Runs all events of one trigger in the order unrestricted updates, discrete updates, publishes, stopping after
+/// the first group that fails; returns the most severe status.
+EventStatus ExecuteAll(const std::vector<LeafAndContext>& leaves, TriggerType trigger);
 
 }  // namespace cairn::systems::internal

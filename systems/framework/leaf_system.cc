@@ -328,4 +328,17 @@ void LeafSystem::DoResolveOutput(const Context& context, int port, const System*
   *leaf_port = port;
 }
 
+const OutputPort& LeafSystem::DeclareStateOutputPort(std::string name, int group) {
+  if (group < 0 || group >= static_cast<int>(xd_initial_.size())) {
+    throw std::invalid_argument("DeclareStateOutputPort('" + name + "'): discrete state group " + cairn::FormatShort(group) +
+                                " is not declared (this system has " + cairn::FormatShort(xd_initial_.size()) +
+                                "); declare it with DeclareDiscreteState first.");
+  }
+  const int size = static_cast<int>(xd_initial_[static_cast<std::size_t>(group)].size());
+  return DeclareVectorOutputPort(
+      std::move(name), size,
+      [group](const Context& context, Eigen::VectorXd* y) { *y = context.get_discrete_state(group); },
+      {discrete_state_ticket(group)});
+}
+
 }  // namespace cairn::systems

@@ -89,6 +89,11 @@ class LeafSystem : public System {
                                      std::move(prerequisites));
   }
 
+  /// A vector output that is discrete state group `group` itself (declare the group first): the usual output of a
+  /// discrete-time plant, depending on that state only (no direct feedthrough). Throws std::invalid_argument for
+  /// an undeclared group.
+  const OutputPort& DeclareStateOutputPort(std::string name, int group);
+
   // ---------------------------------------------------------------------------------------------------------------
   /// @name State and parameters; each returns the index of what it declared.
   /// Declares the continuous state (once per system) with its initial value, which must be finite (throws
@@ -120,7 +125,8 @@ class LeafSystem : public System {
   // ---------------------------------------------------------------------------------------------------------------
   /// @name Events. Handlers: publish `void(const Context&)`, discrete update `void(const Context&,
   /// DiscreteValues* next)`, unrestricted update `void(const Context&, State* next)`; `next` starts as a copy of
-  /// the current values.
+  /// the current values. A handler may return an EventStatus instead of void, to end a simulation
+  /// (EventStatus::ReachedTermination) or report a failure (EventStatus::Failed) with a message.
   template <typename Handler>
   void DeclarePeriodicPublishEvent(double period, double offset, Handler handler) {
     DeclarePeriodic(period, offset, MakePublish(handler));
@@ -182,13 +188,29 @@ class LeafSystem : public System {
     DependencyTicket ticket;
   };
 
-  // A handler is a member function of the subclass (bound to this system) or any callable.
+  // A handler is a member function of the subclass (bound to this system) or any callable, returning void
+  // (succeeded) or an EventStatus.
   template <typename... Args, typename Handler>
-  std::function<void(Args...)> BindHandler(Handler handler) const {
+  std::function<EventStatus(Args...)> BindHandler(Handler handler) const {
     if constexpr (std::is_member_function_pointer_v<Handler>) {
-      return [this, handler](Args... args) { (static_cast<const OwnerOf<Handler>*>(this)->*handler)(args...); };
+      return [this, handler](Args... args) {
+        return AsStatus([&] { return (static_cast<const OwnerOf<Handler>*>(this)->*handler)(args...); });
+      };
     } else {
-      return std::function<void(Args...)>(std::move(handler));
+      return [handler = std::move(handler)](Args... args) mutable {
+        return AsStatus([&] { return handler(args...); });
+      };
+    }
+  }
+  template <typename Call>
+  static EventStatus AsStatus(Call call) {
+    if constexpr (std::is_void_v<decltype(call())>) {
+      call();
+      return EventStatus::Succeeded();
+    } else {
+      static_assert(std::is_same_v<decltype(call()), EventStatus>,
+                    "An event handler must return void or cairn::systems::EventStatus");
+      return call();
     }
   }
   template <typename Handler>

@@ -179,11 +179,13 @@ void System::ForcedPublish(const Context& context) const {
   const auto leaves = CollectLeafSystems(const_cast<Context*>(&context));
   std::vector<internal::TriggeredEvent> events;
   internal::CollectEvents(leaves, TriggerType::kForced, EventKind::kPublish, &events);
-  internal::DispatchPublishes(events);
+  const EventStatus status = internal::DispatchPublishes(events);
+  if (status.failed()) throw std::runtime_error("A forced publish failed: " + status.message());
 }
 
 void System::ExecuteForcedEvents(Context* context) const {
-  internal::ExecuteAll(CollectLeafSystems(context), TriggerType::kForced);
+  const EventStatus status = internal::ExecuteAll(CollectLeafSystems(context), TriggerType::kForced);
+  if (status.failed()) throw std::runtime_error("A forced event failed: " + status.message());
 }
 
 namespace {

@@ -77,10 +77,12 @@ class System {
 
   // ---------------------------------------------------------------------------------------------------------------
   /// @name Forced events
-  /// Runs every forced publish event (of every leaf, for a diagram).
+  /// Runs every forced publish event (of every leaf, for a diagram). Throws std::runtime_error with the handler's
+  /// message if one returns EventStatus::Failed (a reached termination means nothing outside a simulation).
   void ForcedPublish(const Context& context) const;
   /// Runs every forced event: unrestricted updates, then discrete updates (each computed from the state
-  /// before any is applied), then publishes.
+  /// before any is applied), then publishes. Throws std::runtime_error with the handler's message if one returns
+  /// EventStatus::Failed (the failed group's updates are not applied).
   void ExecuteForcedEvents(Context* context) const;
 
   /// Every leaf system of this system (itself, for a leaf) with its subcontext of `context`, in a stable

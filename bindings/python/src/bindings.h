@@ -21,6 +21,8 @@ void DefineSystemsAnalysisAndPrimitives(py::module_ m);
 void DefineOptimization(py::module_ m);
 /// cairn.multibody.
 void DefineMultibody(py::module_ m);
+/// cairn.multibody: the Bullet plant, PD controller and HumanoidPlant (after DefineMultibody: it uses Model, Pose).
+void DefineMultibodyPlant(py::module_ m);
 /// cairn.perception: stereo and occupancy.
 void DefinePerceptionStereoOccupancy(py::module_ m);
 /// cairn.perception: friction.

@@ -16,7 +16,9 @@ PYBIND11_MODULE(_cairn, m) {
   cairn::python::DefineSystemsAnalysisAndPrimitives(systems);
   cairn::python::DefineOptimization(
       m.def_submodule("optimization", "Mathematical programs and their solvers: cairn::optimization."));
-  cairn::python::DefineMultibody(m.def_submodule("multibody", "Rigid-body models and algorithms: cairn::multibody."));
+  py::module_ multibody = m.def_submodule("multibody", "Rigid-body models and algorithms: cairn::multibody.");
+  cairn::python::DefineMultibody(multibody);
+  cairn::python::DefineMultibodyPlant(multibody);
   py::module_ perception =
       m.def_submodule("perception", "Stereo, occupancy and friction perception: cairn::perception.");
   cairn::python::DefinePerceptionStereoOccupancy(perception);

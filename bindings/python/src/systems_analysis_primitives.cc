@@ -61,10 +61,12 @@ void DefineSystemsAnalysisAndPrimitives(py::module_ m) {
   py::enum_<SimulatorStatus::Reason>(status, "Reason", "Why AdvanceTo() returned.")
       .value("kReachedBoundaryTime", SimulatorStatus::Reason::kReachedBoundaryTime, "It reached t_final.")
       .value("kReachedTerminationCondition", SimulatorStatus::Reason::kReachedTerminationCondition,
-             "The monitor stopped it.");
+             "The monitor or an event handler (EventStatus.ReachedTermination) stopped it.")
+      .value("kEventHandlerFailed", SimulatorStatus::Reason::kEventHandlerFailed,
+             "An event handler returned EventStatus.Failed; that step's updates were not applied.");
   status.def_readonly("reason", &SimulatorStatus::reason, "Why AdvanceTo() returned.")
       .def_readonly("time", &SimulatorStatus::time, "The time reached.")
-      .def_readonly("message", &SimulatorStatus::message, "The monitor's reason, if it stopped the run.")
+      .def_readonly("message", &SimulatorStatus::message, "Why the monitor or an event handler stopped the run.")
       .def("reached_boundary_time", &SimulatorStatus::reached_boundary_time, "True if it reached t_final.");
 
   py::class_<IntegratorBase>(m, "IntegratorBase",

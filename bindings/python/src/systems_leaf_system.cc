@@ -25,6 +25,7 @@
 #include "cairn/common/number_text.h"
 #include "cairn/systems/framework/context.h"
 #include "cairn/systems/framework/discrete_values.h"
+#include "cairn/systems/framework/event_status.h"
 #include "cairn/systems/framework/leaf_system.h"
 #include "cairn/systems/framework/state.h"
 #include "numpy_support.h"
@@ -130,22 +131,33 @@ PyLeafSystem::Prerequisites ToPrerequisites(const std::optional<std::vector<Depe
 py::object ContextObject(const Context& context) { return py::cast(&context, py::return_value_policy::reference); }
 
 // Event handlers, as std::function objects over the callback at `index`.
-std::function<void(const Context&)> PublishHandler(const PyLeafSystem* system, int index) {
+// A Python handler returns None (succeeded) or an EventStatus.
+EventStatus HandlerStatus(const py::object& result, const PyLeafSystem* system) {
+  if (result.is_none()) return EventStatus::Succeeded();
+  if (py::isinstance<EventStatus>(result)) return result.cast<EventStatus>();
+  throw py::type_error("An event handler of system '" + system->GetPathName() + "' returned a " +
+                       std::string(py::str(py::type::of(result).attr("__name__"))) +
+                       "; return None or a cairn.systems.EventStatus");
+}
+
+std::function<EventStatus(const Context&)> PublishHandler(const PyLeafSystem* system, int index) {
   return [system, index](const Context& context) {
     py::gil_scoped_acquire gil;
-    system->callback(index)(ContextObject(context));
+    return HandlerStatus(system->callback(index)(ContextObject(context)), system);
   };
 }
-std::function<void(const Context&, DiscreteValues*)> DiscreteHandler(const PyLeafSystem* system, int index) {
+std::function<EventStatus(const Context&, DiscreteValues*)> DiscreteHandler(const PyLeafSystem* system, int index) {
   return [system, index](const Context& context, DiscreteValues* next) {
     py::gil_scoped_acquire gil;
-    system->callback(index)(ContextObject(context), py::cast(next, py::return_value_policy::reference));
+    return HandlerStatus(
+        system->callback(index)(ContextObject(context), py::cast(next, py::return_value_policy::reference)), system);
   };
 }
-std::function<void(const Context&, State*)> UnrestrictedHandler(const PyLeafSystem* system, int index) {
+std::function<EventStatus(const Context&, State*)> UnrestrictedHandler(const PyLeafSystem* system, int index) {
   return [system, index](const Context& context, State* next) {
     py::gil_scoped_acquire gil;
-    system->callback(index)(ContextObject(context), py::cast(next, py::return_value_policy::reference));
+    return HandlerStatus(
+        system->callback(index)(ContextObject(context), py::cast(next, py::return_value_policy::reference)), system);
   };
 }
 
@@ -159,13 +171,32 @@ const char* KeepDoc(std::string doc) {
 const char* kHandlerDoc =
     " `handler` is called with (context) for publish events, (context, discrete_state: DiscreteValues) for discrete "
     "updates and (context, state: State) for unrestricted updates, where the second argument starts as a copy of "
-    "the current values and receives the next ones.";
+    "the current values and receives the next ones. It returns None, or an EventStatus: "
+    "EventStatus.ReachedTermination(message) ends Simulator.AdvanceTo() normally, EventStatus.Failed(message) ends "
+    "it with SimulatorStatus.Reason.kEventHandlerFailed.";
 
 }  // namespace
 
 bool IsPythonSystem(const System& system) { return dynamic_cast<const PyLeafSystem*>(&system) != nullptr; }
 
 void DefineSystemsLeafSystem(py::module_ m) {
+  py::class_<EventStatus> status(m, "EventStatus",
+                                 "What an event handler reports: did nothing, succeeded, reached termination (the "
+                                 "Simulator stops) or failed (the Simulator stops; that step's updates are dropped).");
+  py::enum_<EventStatus::Severity>(status, "Severity", "In increasing severity.")
+      .value("kDidNothing", EventStatus::Severity::kDidNothing, "Nothing to do.")
+      .value("kSucceeded", EventStatus::Severity::kSucceeded, "Done.")
+      .value("kReachedTermination", EventStatus::Severity::kReachedTermination, "The simulation should end.")
+      .value("kFailed", EventStatus::Severity::kFailed, "The simulation cannot go on.");
+  status.def_static("DidNothing", &EventStatus::DidNothing, "The handler had nothing to do.")
+      .def_static("Succeeded", &EventStatus::Succeeded, "The handler did its work.")
+      .def_static("ReachedTermination", &EventStatus::ReachedTermination, py::arg("message"),
+                  "End the simulation normally, for `message`.")
+      .def_static("Failed", &EventStatus::Failed, py::arg("message"), "The handler failed, for `message`.")
+      .def("severity", &EventStatus::severity, "How severe.")
+      .def("message", &EventStatus::message, "The handler's message.")
+      .def("stops", &EventStatus::stops, "True if the Simulator stops.")
+      .def("failed", &EventStatus::failed, "True for a failure.");
   py::class_<LeafSystem, PyLeafSystem, System> leaf(
       m, "LeafSystem",
       "Base class of leaf systems. Subclass it in Python to write a system: call super().__init__(), then declare "

@@ -336,3 +336,37 @@ def test_vector_log_sink_records():
     log = sink.GetLog(diagram.GetSubsystemContext(sink, simulator.get_context()))
     np.testing.assert_allclose(log.sample_times(), [0.0, 0.5, 1.0, 1.5, 2.0])
     assert copy.deepcopy(log.data().tolist()) == [[4.0] * 5]
+
+
+def test_python_event_handlers_can_end_a_simulation():
+    from cairn.systems import EventStatus, LeafSystem, Simulator, SimulatorStatus
+
+    class Counter(LeafSystem):
+        def __init__(self, how):
+            super().__init__()
+            self.how = how
+            self.DeclareDiscreteState(np.zeros(1))
+            self.DeclarePeriodicDiscreteUpdateEvent(0.1, 0.0, self.update)
+
+        def update(self, context, next_state):
+            values = next_state.get_value(0)
+            values[0] += 1.0
+            count = values[0]
+            if count >= 3 and self.how == "stop":
+                return EventStatus.ReachedTermination("counted to 3")
+            if count >= 2 and self.how == "fail":
+                return EventStatus.Failed("cannot count to 2")
+            if self.how == "bad":
+                return 42
+            return None
+
+    status = Simulator(Counter("stop")).AdvanceTo(10.0)
+    assert status.reason == SimulatorStatus.Reason.kReachedTerminationCondition
+    assert "counted to 3" in status.message
+    assert status.time == pytest.approx(0.2)
+    status = Simulator(Counter("fail")).AdvanceTo(10.0)
+    assert status.reason == SimulatorStatus.Reason.kEventHandlerFailed
+    assert "cannot count to 2" in status.message
+    assert Simulator(Counter("none")).AdvanceTo(1.0).reached_boundary_time()
+    with pytest.raises(TypeError, match="returned a int; return None or a cairn.systems.EventStatus"):
+        Simulator(Counter("bad")).AdvanceTo(1.0)

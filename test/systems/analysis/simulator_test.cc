@@ -209,5 +209,62 @@ TEST(SimulatorTest, RealTimePacingKeepsResults) {
   EXPECT_NEAR(simulator.get_context().get_continuous_state_vector()[0], 0.05, 1e-12);
 }
 
+// Counts in its discrete state every 0.1 s and reports, once the count reaches `stop_at`, a termination or a
+// failure (as a plant reports a fall), or does the same from a publish event.
+class Stopper final : public LeafSystem {
+ public:
+  enum class How { kTerminateInUpdate, kFailInUpdate, kTerminateInPublish };
+  Stopper(How how, double stop_at) {
+    DeclareDiscreteState(Eigen::VectorXd::Zero(1));
+    DeclareStateOutputPort("count", 0);
+    DeclarePeriodicDiscreteUpdateEvent(0.1, 0.0, [how, stop_at](const Context& c, DiscreteValues* next) {
+      next->get_mutable_value(0)[0] += 1.0;
+      if (how == How::kTerminateInPublish || next->get_mutable_value(0)[0] < stop_at) return EventStatus::Succeeded();
+      return how == How::kTerminateInUpdate ? EventStatus::ReachedTermination("fell at count " + std::to_string(
+                                                                                  static_cast<int>(stop_at)))
+                                            : EventStatus::Failed("cannot go on at t = " + std::to_string(c.get_time()));
+    });
+    DeclarePeriodicPublishEvent(0.1, 0.05, [how, stop_at](const Context& c) {
+      if (how == How::kTerminateInPublish && c.get_discrete_state(0)[0] >= stop_at) {
+        return EventStatus::ReachedTermination("seen " + std::to_string(static_cast<int>(stop_at)));
+      }
+      return EventStatus::DidNothing();
+    });
+  }
+};
+
+TEST(SimulatorTest, EventHandlersCanEndTheRunWithAReason) {
+  DiagramBuilder builder;
+  builder.AddNamedSystem<Stopper>("plant", Stopper::How::kTerminateInUpdate, 4.0);
+  auto diagram = builder.Build();
+  Simulator simulator(*diagram);
+  const SimulatorStatus status = simulator.AdvanceTo(10.0);
+  EXPECT_EQ(status.reason, SimulatorStatus::Reason::kReachedTerminationCondition);
+  EXPECT_NE(status.message.find("plant: fell at count 4"), std::string::npos) << status.message;
+  // Updates at 0, 0.1, 0.2 and 0.3 s; the terminating update itself is applied.
+  EXPECT_NEAR(status.time, 0.3, 1e-12);
+  const auto& plant = diagram->GetSubsystemByName("plant");
+  EXPECT_EQ(plant.get_output_port(0).Eval<Eigen::VectorXd>(diagram->GetSubsystemContext(plant, simulator.get_context()))[0],
+            4.0);
+}
+
+TEST(SimulatorTest, AFailedUpdateIsNotAppliedAndIsReturned) {
+  Stopper plant(Stopper::How::kFailInUpdate, 3.0);
+  Simulator simulator(plant);
+  const SimulatorStatus status = simulator.AdvanceTo(10.0);
+  EXPECT_EQ(status.reason, SimulatorStatus::Reason::kEventHandlerFailed);
+  EXPECT_NE(status.message.find("cannot go on at t = 0.2"), std::string::npos) << status.message;
+  EXPECT_EQ(simulator.get_context().get_discrete_state(0)[0], 2.0);
+}
+
+TEST(SimulatorTest, APublishCanEndTheRun) {
+  Stopper plant(Stopper::How::kTerminateInPublish, 2.0);
+  Simulator simulator(plant);
+  const SimulatorStatus status = simulator.AdvanceTo(10.0);
+  EXPECT_EQ(status.reason, SimulatorStatus::Reason::kReachedTerminationCondition);
+  EXPECT_NEAR(status.time, 0.15, 1e-12);
+  EXPECT_NE(status.message.find("seen 2"), std::string::npos) << status.message;
+}
+
 }  // namespace
 }  // namespace cairn::systems

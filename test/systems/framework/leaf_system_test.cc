@@ -229,5 +229,26 @@ TEST(LeafSystemTest, PerContextStorageIsPerContextAndCloned) {
   EXPECT_EQ(system.Get(*a->Clone()), 2);
 }
 
+// A discrete-time system whose output is its state (the shape of a physics plant's `state` port).
+class StateHolder final : public LeafSystem {
+ public:
+  explicit StateHolder(bool declare_state) {
+    if (declare_state) DeclareDiscreteState(Eigen::Vector2d(1.0, 2.0));
+    DeclareVectorInputPort("u", 1);
+    DeclareStateOutputPort("state", 0);
+  }
+};
+
+TEST(LeafSystemTest, StateOutputPortIsTheStateWithoutFeedthrough) {
+  StateHolder system(true);
+  auto context = system.CreateDefaultContext();
+  EXPECT_EQ(system.get_output_port(0).Eval<Eigen::VectorXd>(*context), Eigen::Vector2d(1.0, 2.0));
+  EXPECT_FALSE(system.HasDirectFeedthrough(0, 0));
+  context->SetDiscreteState(0, Eigen::Vector2d(3.0, 4.0));
+  EXPECT_EQ(system.get_output_port(0).Eval<Eigen::VectorXd>(*context), Eigen::Vector2d(3.0, 4.0));
+  CAIRN_EXPECT_THROWS_WITH(StateHolder(false), std::invalid_argument,
+                           "DeclareStateOutputPort('state'): discrete state group 0 is not declared");
+}
+
 }  // namespace
 }  // namespace cairn::systems

@@ -1,0 +1,23 @@
+#pragma once
+
+namespace cairn::multibody {
+
+/// Thresholds of ContactMonitor: when a sole counts as loaded, when it slips, when the robot has fallen.
+struct ContactMonitorOptions {
+  /// A sole is loaded while its normal force exceeds this (N): 3 % of the 64 kg humanoid's weight, above the
+  /// solver noise of a sole hovering in contact and below the load of any real stance.
+  double loaded_force = 20.0;
+  /// A loaded sole slides while the tangential speed of its frame exceeds this (m/s).
+  double slip_speed = 0.01;
+  /// A slip event is reported once a loaded sole has slid this far (m) in one continuous slide, so that the
+  /// micro-motion of a settling contact is not a slip.
+  double slip_distance = 0.002;
+  /// Fallen when the base origin is less than this (m) above the lower sole frame (the humanoid stands at 0.86 m).
+  double fall_base_height = 0.5;
+  /// Fallen when the base's z axis tilts more than this (rad, 40 deg) from the world's.
+  double fall_tilt = 0.7;
+  /// Fallen when a body other than the feet presses on the terrain with more than this (N).
+  double fall_contact_force = 1.0;
+};
+
+}  // namespace cairn::multibody
