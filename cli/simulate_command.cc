@@ -31,6 +31,7 @@
 #include "cairn/systems/primitives/constant_vector_source.h"
 #include "cairn/systems/primitives/function_system.h"
 #include "command_registry.h"
+#include "data_directory.h"
 #include "file_checks.h"
 #include "numeric_option.h"
 #include "usage_error.h"
@@ -45,9 +46,9 @@ constexpr double kLogPeriod = 0.01;     // s between log rows
 constexpr double kMaxFriction = 10.0;   // Bullet's cap on the combined coefficient
 
 struct SimulateArguments {
-  std::string robot = std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid.urdf";
-  std::string control = std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid_control.yaml";
-  std::string walking = std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid_walking.yaml";
+  std::string robot = DataDirectory() + "/robots/cairn_humanoid.urdf";
+  std::string control = DataDirectory() + "/robots/cairn_humanoid_control.yaml";
+  std::string walking = DataDirectory() + "/robots/cairn_humanoid_walking.yaml";
   std::string scenario;
   std::string trajectory;
   std::string out;
