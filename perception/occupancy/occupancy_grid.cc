@@ -30,9 +30,10 @@ OccupancyGrid::OccupancyGrid(const Eigen::Vector3d& min_corner, double resolutio
   if (dims.minCoeff() <= 0) {
     throw std::invalid_argument("OccupancyGrid: dimensions " + size + " must all be positive");
   }
-  // In 64 bits: the product of three ints overflows even size_t's range checks.
-  const std::int64_t cells = static_cast<std::int64_t>(dims.x()) * dims.y() * dims.z();
-  if (cells > kMaxCells) {
+  // In double: the product of three ints overflows even 64 bits (2^31 cubed); a double is exact far beyond the
+  // limit and only rounds counts that are refused anyway.
+  const double cells = static_cast<double>(dims.x()) * dims.y() * dims.z();
+  if (cells > static_cast<double>(kMaxCells)) {
     throw std::invalid_argument("OccupancyGrid: dimensions " + size + " are " + cairn::FormatShort(cells) +
                                 " cells, more than the " + cairn::FormatShort(kMaxCells) +
                                 " a grid may hold; coarsen the resolution or shrink the extent");
