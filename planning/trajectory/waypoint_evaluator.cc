@@ -1,5 +1,7 @@
 #include <cairn/planning/trajectory/waypoint_evaluator.h>
 
+#include <cairn/planning/trajectory/hessian_by_differences.h>
+
 #include <stdexcept>
 #include <utility>
 
@@ -20,7 +22,15 @@ WaypointEvaluator::WaypointEvaluator(std::string name, std::shared_ptr<const mul
     : optimization::Evaluator(name, RequireModel(model, name)->nq(), num_outputs, BlockPattern(num_outputs, columns),
                               optimization::DerivativeSource::kAnalytic),
       model_(std::move(model)),
-      chart_(*model_) {}
+      chart_(*model_) {
+  DeclareHessianPattern(LowerTrianglePattern(columns));
+}
+
+void WaypointEvaluator::DoEvalHessian(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                      const Eigen::Ref<const Eigen::VectorXd>& weights,
+                                      Eigen::Ref<Eigen::VectorXd> hessian_values) const {
+  HessianByDifferences(*this, x, weights, hessian_pattern(), hessian_values);
+}
 
 std::vector<optimization::SparsityEntry> WaypointEvaluator::BlockPattern(int rows, const std::vector<int>& columns) {
   std::vector<optimization::SparsityEntry> pattern;

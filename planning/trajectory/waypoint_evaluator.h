@@ -16,7 +16,9 @@ namespace cairn::planning {
 /// normalised, see ConfigurationChart) whose analytic Jacobian is computed in tangent space and mapped to q.
 ///
 /// Subclasses implement EvalTangent (value and rows x nv tangent Jacobian at the normalised q); this class
-/// evaluates it, maps the Jacobian through the chart and writes the declared pattern's entries. Each call makes
+/// evaluates it, maps the Jacobian through the chart and writes the declared pattern's entries. The Hessian
+/// (lower triangle over the same columns) comes from central differences of that analytic Jacobian
+/// (HessianByDifferences), for Ipopt's exact-Hessian mode. Each call makes
 /// its own multibody::Data, so the evaluators hold no mutable state and are safe to share between threads.
 class WaypointEvaluator : public optimization::Evaluator {
  public:
@@ -39,6 +41,8 @@ class WaypointEvaluator : public optimization::Evaluator {
   void DoEval(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const override;
   void DoEvalWithJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y,
                           Eigen::Ref<Eigen::VectorXd> jacobian_values) const override;
+  void DoEvalHessian(const Eigen::Ref<const Eigen::VectorXd>& x, const Eigen::Ref<const Eigen::VectorXd>& weights,
+                     Eigen::Ref<Eigen::VectorXd> hessian_values) const override;
 
   /// The dense pattern rows x columns.
   static std::vector<optimization::SparsityEntry> BlockPattern(int rows, const std::vector<int>& columns);

@@ -6,6 +6,7 @@
 #include <cairn/multibody/configuration.h>
 #include <cairn/multibody/model.h>
 #include <cairn/multibody/urdf_parser.h>
+#include <cairn/planning/footstep/footstep_plan.h>
 
 namespace cairn::planning::test {
 
@@ -31,6 +32,31 @@ inline Eigen::VectorXd BentKneePosture(const multibody::Model& model, double hei
     q(model.joint(model.GetJointIndex(s + "ankle_pitch")).idx_q) = -0.3;
   }
   return q;
+}
+
+/// A found plan of `steps` straight steps of `length` m along x (right foot first), feet 0.2 m apart, with the
+/// timing t_ds = 0.2 s, t_sw = 0.6 s; the last step brings the feet together.
+inline FootstepPlan StraightPlan(int steps, double length) {
+  FootstepPlan plan;
+  plan.found = true;
+  plan.start.left = {0.0, 0.1, 0.0, 0.0};
+  plan.start.right = {0.0, -0.1, 0.0, 0.0};
+  plan.first_side = FootSide::kRight;
+  double x_left = 0.0, x_right = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    PlannedStep step;
+    step.side = k % 2 == 0 ? FootSide::kRight : FootSide::kLeft;
+    double& x = step.side == FootSide::kLeft ? x_left : x_right;
+    const double other = step.side == FootSide::kLeft ? x_right : x_left;
+    x = k + 1 == steps ? other : other + length;
+    step.pose = {x, step.side == FootSide::kLeft ? 0.1 : -0.1, 0.0, 0.0};
+    step.transition.feasible = true;
+    step.transition.parameters = {0.2, 0.6, 0.8};
+    step.transition.duration = 0.8;
+    plan.steps.push_back(step);
+  }
+  plan.UpdateTotals();
+  return plan;
 }
 
 }  // namespace cairn::planning::test

@@ -175,6 +175,21 @@ TEST(CollisionPenaltyTest, PenalisesABarAtTheHeadWithAnExactGradient) {
   const CollisionPenalty sample("collision_sample", model, {bar}, {}, 0.025, 0.01, 0.5);
   const auto sample_check = CheckGradients(sample, both, 1e-6);
   EXPECT_TRUE(sample_check.passed) << sample_check.ToString();
+  // The ground plane, in closed form: a robot standing 1 cm too low has its soles' corners in the margin.
+  Eigen::VectorXd low = q;
+  low(2) -= 0.01 + 0.0;
+  const CollisionPenalty ground("ground", model, {}, {}, 0.025, 0.0, 0.0, /*ground_height=*/0.0);
+  multibody::ForwardKinematics(*model, data, low);
+  const double sole_z = data.X_world[static_cast<std::size_t>(model->GetBodyIndex("l_sole"))].translation().z();
+  std::string ground_pair;
+  EXPECT_NEAR(ground.MinimumEnvironmentDistance(low, &ground_pair), sole_z, 1e-9);
+  EXPECT_NE(ground_pair.find("sole_box - ground"), std::string::npos) << ground_pair;
+  for (unsigned seed = 11; seed <= 13; ++seed) {
+    Eigen::VectorXd random = RandomPoint(seed);
+    random(2) = 0.5;
+    const auto ground_check = CheckGradients(ground, random, 1e-5);
+    EXPECT_TRUE(ground_check.passed) << ground_check.ToString();
+  }
   // Far away: zero penalty.
   Eigen::VectorXd away = q;
   away(0) += 3.0;
