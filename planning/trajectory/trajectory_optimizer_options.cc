@@ -26,6 +26,8 @@ void ValidateTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
           "finite and > 0");
   Require(o.smoothness_weight >= 0.0 && std::isfinite(o.smoothness_weight), "smoothness_weight",
           o.smoothness_weight, "finite and >= 0");
+  Require(o.posture_weight >= 0.0 && std::isfinite(o.posture_weight), "posture_weight", o.posture_weight,
+          "finite and >= 0");
   Require(o.sole_length > 0.0 && o.sole_length <= 1.0, "sole_length", o.sole_length, "in (0, 1] m");
   Require(o.sole_width > 0.0 && o.sole_width <= 1.0, "sole_width", o.sole_width, "in (0, 1] m");
   Require(o.com_margin >= 0.0 && o.com_margin < 0.5 * std::min(o.sole_length, o.sole_width), "com_margin",

@@ -25,6 +25,10 @@ struct TrajectoryOptimizerOptions {
   /// the joints that barely change the torques (wrists, neck) well determined, so the solver converges, and keeps
   /// them from swinging between waypoints. Small against the torque term.
   double smoothness_weight{1e-2};
+  /// Weight of the posture term sum_t |q_t - q_neutral|^2 over the joints (not in eq. 2.9; q_neutral is the
+  /// model's zero posture): it pins the directions the torques do not see at all (an arm turning about its own
+  /// axis), so a solution is isolated and every solver finds the same one.
+  double posture_weight{1e-3};
   /// Margin of the COM inside the support polygon, m (eq. 2.9c).
   double com_margin{0.02};
   /// Sole rectangle (length along the foot, width), m, centred on the sole frame.

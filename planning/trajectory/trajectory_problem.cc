@@ -143,6 +143,13 @@ TrajectoryProblem::TrajectoryProblem(std::shared_ptr<const multibody::Model> mod
     if (options_.collision_weight > 0.0) {
       prog_.AddCost(std::make_shared<ScaledEvaluator>(collision, options_.collision_weight), q);
     }
+    if (options_.posture_weight > 0.0) {
+      std::vector<Eigen::Triplet<double>> diagonal;
+      for (int k : chart_.joint_coordinates()) diagonal.emplace_back(k, k, 2.0 * options_.posture_weight);
+      Eigen::SparseMatrix<double> Q(model_ref.nq(), model_ref.nq());
+      Q.setFromTriplets(diagonal.begin(), diagonal.end());
+      prog_.AddQuadraticCost(Q, Eigen::VectorXd::Zero(model_ref.nq()), 0.0, q);
+    }
     // Contacts (2.9b).
     for (const WaypointContact& contact : spec.contacts) {
       auto error = std::make_shared<FramePoseError>(model_, contact.frame, contact.X_WF);

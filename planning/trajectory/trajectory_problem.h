@@ -31,7 +31,8 @@ struct RowViolation {
 /// Variables: one block "q<t>" of nq coordinates per waypoint (t = the waypoint's index in the whole plan).
 /// Costs: sum_t torque_weight |tau(q_t) / tau_max|^2 (StaticTorqueResidual as a least-squares cost) and
 /// collision_weight times the hinge penalty (CollisionPenalty) at every waypoint and at samples_between points
-/// between consecutive waypoints, plus smoothness_weight |q_{t+1} - q_t|^2 over the joints. Constraints per waypoint: the 6-D pose error of each contact (6 rows per
+/// between consecutive waypoints, plus the regularisers posture_weight |q_t|^2 and smoothness_weight
+/// |q_{t+1} - q_t|^2 over the joint coordinates. Constraints per waypoint: the 6-D pose error of each contact (6 rows per
 /// contact, = 0), the COM inside the support polygon (one row per edge, <= b - margin), the waist roll (= 0),
 /// |quat|^2 = 1; between consecutive waypoints the joint speed limits |q_{t+1} - q_t| <= v_max (t_{t+1} - t_t)
 /// (linear rows); joint limits are variable bounds. Every row block touches one waypoint's variables, or two for

@@ -95,3 +95,73 @@ TEST(OptimizeWholeBodyTrajectoryTest, SolvesAStraightPlanWithinEveryConstraint) 
 
 }  // namespace
 }  // namespace cairn::planning
+
+namespace cairn::planning {
+namespace {
+
+TEST(OptimizeWholeBodyTrajectoryTest, SlsqpByNameGivesTheSamePostureOnOneStance) {
+  const auto model = test::Humanoid();
+  // The start stance only (one waypoint), staggered and turned: a symmetric stance has a symmetric stationary
+  // point that is a saddle (the pelvis can yaw either way), where a quasi-Newton method that never sees an
+  // asymmetric gradient stays.
+  FootstepPlan plan = test::StraightPlan(0, 0.2);
+  plan.start.left = {0.08, 0.12, 0.0, 0.25};
+  TrajectoryOptimizerOptions options;
+  const WholeBodyTrajectory ipopt = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  options.solver = "nlopt:SLSQP";
+  const WholeBodyTrajectory slsqp = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  ASSERT_TRUE(ipopt.found) << ipopt.report.message;
+  ASSERT_TRUE(slsqp.found) << slsqp.report.message;
+  EXPECT_EQ(ipopt.report.solver, "ipopt");
+  EXPECT_EQ(slsqp.report.solver, "nlopt:LD_SLSQP");
+  ASSERT_EQ(ipopt.waypoints.size(), 1u);
+  ASSERT_EQ(slsqp.waypoints.size(), 1u);
+  EXPECT_NEAR(ipopt.report.objective, slsqp.report.objective, 1e-4 * std::max(1.0, ipopt.report.objective));
+  EXPECT_LT((ipopt.waypoints[0].q - slsqp.waypoints[0].q).cwiseAbs().maxCoeff(), 1e-2)
+      << "ipopt " << ipopt.waypoints[0].q.transpose() << "\nslsqp " << slsqp.waypoints[0].q.transpose();
+  EXPECT_LT((ipopt.waypoints[0].com - slsqp.waypoints[0].com).norm(), 1e-4);
+}
+
+TEST(OptimizeWholeBodyTrajectoryTest, AStanceOutOfReachIsAResultThatNamesTheStance) {
+  const auto model = test::Humanoid();
+  FootstepPlan plan = test::StraightPlan(2, 0.2);
+  plan.steps[0].pose.x = 1.5;  // the right foot's first step lands 1.5 m ahead
+  TrajectoryOptimizerOptions options;
+  options.max_iterations = 150;
+  const WholeBodyTrajectory trajectory = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  EXPECT_FALSE(trajectory.found);
+  EXPECT_FALSE(trajectory.report.success);
+  ASSERT_FALSE(trajectory.report.violations.empty()) << trajectory.report.message;
+  EXPECT_NE(trajectory.report.violations.front().find("stance 1 start, "), std::string::npos)
+      << trajectory.report.message;
+  EXPECT_NE(trajectory.report.message.find("most violated: stance 1 start"), std::string::npos)
+      << trajectory.report.message;
+  EXPECT_EQ(trajectory.waypoints.size(), 5u);  // the best point is still returned
+}
+
+TEST(OptimizeWholeBodyTrajectoryTest, AMissingPlanIsAResultNotAnError) {
+  FootstepPlan plan;
+  plan.reason = "goal unreachable";
+  const WholeBodyTrajectory trajectory = OptimizeWholeBodyTrajectory(test::Humanoid(), plan, {});
+  EXPECT_FALSE(trajectory.found);
+  EXPECT_EQ(trajectory.report.status, "no footstep plan");
+  EXPECT_NE(trajectory.report.message.find("goal unreachable"), std::string::npos);
+  TrajectoryOptimizerOptions bad;
+  bad.d_safe = -1.0;
+  CAIRN_EXPECT_THROWS_WITH(OptimizeWholeBodyTrajectory(test::Humanoid(), test::StraightPlan(1, 0.2), {}, bad),
+                           std::invalid_argument, "d_safe is -1");
+}
+
+TEST(OptimizeWholeBodyTrajectoryTest, ARecedingWindowKeepsContinuityAndTheConstraints) {
+  const auto model = test::Humanoid();
+  const FootstepPlan plan = test::StraightPlan(3, 0.2);
+  TrajectoryOptimizerOptions options;
+  options.window_stances = 2;
+  const WholeBodyTrajectory trajectory = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  ASSERT_TRUE(trajectory.found) << trajectory.report.message;
+  EXPECT_EQ(trajectory.report.windows, 3);
+  ExpectSolutionHoldsTheConstraints(trajectory, plan, options);
+}
+
+}  // namespace
+}  // namespace cairn::planning
