@@ -30,6 +30,7 @@ optimization::SolverOptions MakeSolverOptions(const optimization::Solver& solver
     out.Set("ipopt", "tol", options.tolerance);
     out.Set("ipopt", "constr_viol_tol", 0.1 * options.tolerance);
     out.Set("ipopt", "acceptable_iter", 0);  // never stop at the merely "acceptable" level
+    out.Set("ipopt", "hessian_approximation", options.hessian);
   } else if (solver.options_key() == "nlopt") {
     out.Set("nlopt", "maxeval", 50 * options.max_iterations);
     out.Set("nlopt", "constraint_tol", 0.1 * options.tolerance);
@@ -82,6 +83,16 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
       }
       out.report.num_constraints = rows;
       out.report.jacobian_nonzeros = nonzeros;
+      int hessian = 0;
+      const auto count = [&hessian](const auto& terms) {
+        for (const auto& t : terms) {
+          if (t.evaluator()->has_hessian()) hessian += static_cast<int>(t.evaluator()->hessian_pattern().size());
+        }
+      };
+      count(problem.program().costs());
+      count(problem.program().least_squares_costs());
+      count(problem.program().constraints());
+      out.report.hessian_nonzeros = hessian;
     }
     if (out.report.status.empty() || !result.is_success()) out.report.status = optimization::to_string(result.status);
     const std::vector<RowViolation> violations = problem.Violations(result.x, kReportThreshold);
@@ -89,6 +100,12 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
     worst.insert(worst.end(), violations.begin(), violations.end());
     for (const RowViolation& v : violations) out.report.max_violation = std::max(out.report.max_violation, v.amount);
 
+    std::string sample_pair;
+    const double sample_clearance = problem.MinimumSampleClearance(result.x, &sample_pair);
+    if (sample_clearance < out.report.min_sample_clearance) {
+      out.report.min_sample_clearance = sample_clearance;
+      out.report.min_sample_pair = sample_pair;
+    }
     const int keep = final_window ? problem.num_waypoints() : std::min(2, problem.num_waypoints());
     for (int i = 0; i < keep; ++i) {
       WholeBodyWaypoint w;
@@ -107,7 +124,7 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
     if (final_window) break;
     previous = TrajectoryProblem::FixedWaypoint{problem.spec(keep - 1), problem.WaypointConfiguration(result.x, keep - 1)};
   }
-  out.report.hessian = "limited-memory";
+  out.report.hessian = solver->options_key() == "ipopt" ? options.hessian : "solver's own";
   std::stable_sort(worst.begin(), worst.end(),
                    [](const RowViolation& a, const RowViolation& b) { return a.amount > b.amount; });
   for (std::size_t i = 0; i < worst.size() && i < kMaxReported; ++i) out.report.violations.push_back(worst[i].ToString());

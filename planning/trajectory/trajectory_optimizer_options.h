@@ -19,11 +19,14 @@ struct TrajectoryOptimizerOptions {
   double self_margin{0.01};
   /// Collision samples between consecutive waypoints (0: waypoints only), at fractions k / (n + 1).
   int samples_between{1};
-  /// Weight of the squared static torques, each divided by its joint's effort limit (eq. 2.10).
+  /// Weight of the squared static torques, each divided by its joint's effort limit (eq. 2.10; about 0.1-1 per
+  /// waypoint). The thesis' alpha = 50 weighs a hinge in metres against torques in trajopt's units, so with
+  /// these units a link pressed by a strong torque gradient can settle a little inside d_safe: raise
+  /// collision_weight where the clearance must be exact.
   double torque_weight{1.0};
   /// Weight of the smoothness term sum_t |q_{t+1} - q_t|^2 over the joint coordinates (not in eq. 2.9): it makes
   /// the joints that barely change the torques (wrists, neck) well determined, so the solver converges, and keeps
-  /// them from swinging between waypoints. Small against the torque term.
+  /// them from swinging between waypoints. Small against the torque term (1 % of its weight).
   double smoothness_weight{1e-2};
   /// Weight of the posture term sum_t |q_t - q_neutral|^2 over the joints (not in eq. 2.9; q_neutral is the
   /// model's zero posture): it pins the directions the torques do not see at all (an arm turning about its own
@@ -44,6 +47,9 @@ struct TrajectoryOptimizerOptions {
   double ground_height{0.0};
   /// Solver by name (MakeSolver): "ipopt" (default) or e.g. "nlopt:SLSQP" for small problems.
   std::string solver{"ipopt"};
+  /// Ipopt's Hessian: "exact" (every term provides one: analytic for the quadratic terms, differences of the
+  /// analytic Jacobians for the kinematic ones) or "limited-memory" (L-BFGS).
+  std::string hessian{"exact"};
   /// Solver iteration budget (Ipopt max_iter; NLopt maxeval is 50 times it).
   int max_iterations{500};
   /// Convergence and constraint tolerance given to the solver.

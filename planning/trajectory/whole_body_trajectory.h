@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ struct TrajectorySolveReport {
   /// The most violated rows (largest first, at most 5): "stance 3, l_sole position off by 0.21 m".
   std::vector<std::string> violations;
   double max_violation{0.0};        ///< largest constraint or bound violation (m, rad or normalised units)
+  /// Smallest distance to the environment at the collision samples between waypoints, m (infinity if none),
+  /// and the pair, e.g. "collision(stance 3 start -> stance 3 mid-swing): head_sphere - high bar".
+  double min_sample_clearance{std::numeric_limits<double>::infinity()};
+  std::string min_sample_pair;
   int iterations{0};                ///< solver iterations summed over windows
   int windows{0};                   ///< problems solved (1 for the whole plan)
   double seconds{0.0};              ///< wall time of the solves, s
@@ -35,7 +40,10 @@ struct TrajectorySolveReport {
   int num_variables{0};             ///< of the largest problem solved
   int num_constraints{0};           ///< rows of the largest problem solved
   int jacobian_nonzeros{0};         ///< structural nonzeros of its constraint Jacobian
-  std::string hessian;              ///< "exact" or "limited-memory"
+  /// Hessian entries declared by the largest problem's terms (before Ipopt merges duplicates; the least-squares
+  /// terms' J'J adds more); 0 if a term has none.
+  int hessian_nonzeros{0};
+  std::string hessian;              ///< "exact" or "limited-memory" (Ipopt), else "solver's own"
 };
 
 /// The output of the whole-body optimiser (thesis 2.5.1b): waypoints from the footstep plan's stances.
