@@ -27,6 +27,7 @@
 #include "file_checks.h"
 #include "numeric_option.h"
 #include "plan_image.h"
+#include "whole_body_output.h"
 #include "progress_bar.h"
 
 namespace cairn::cli {
@@ -42,6 +43,7 @@ struct PlanArguments {
   std::string out;
   std::string oracle_cache;
   bool no_refine{false};
+  bool whole_body{false};
 };
 
 // $XDG_CACHE_HOME/cairn/oracles, else ~/.cache/cairn/oracles, else a folder in the working directory.
@@ -56,7 +58,9 @@ std::string DefaultOracleCache() {
 }
 
 // The files `--out` holds; the folder is replaced as a whole (AtomicOutputDirectory).
-bool IsPlanOutput(const std::string& name) { return name == "plan.json" || name == "plan.png"; }
+bool IsPlanOutput(const std::string& name) {
+  return name == "plan.json" || name == "plan.png" || name == "trajectory.json" || name == "trajectory.png";
+}
 
 void Warn(const std::string& message) { std::fprintf(stderr, "cairn plan: warning: %s\n", message.c_str()); }
 
@@ -203,6 +207,7 @@ int Run(const PlanArguments& args) {
   }
 
   const std::string json = PlanJson(scenario, plan, objective, refine_ms);
+  const int whole_body = args.whole_body ? RunWholeBody(scenario, plan, args.json, out ? &*out : nullptr) : 0;
   if (out) {
     out->WriteFile("plan.png", PlanImagePng(terrain, plan, scenario.goal(), geometry));
     out->WriteFile("plan.json", json + "\n");
@@ -214,7 +219,7 @@ int Run(const PlanArguments& args) {
     PrintSummary(scenario, plan, objective);
     if (out) std::printf("wrote      %s/plan.json, %s/plan.png\n", args.out.c_str(), args.out.c_str());
   }
-  return 0;
+  return whole_body;
 }
 
 }  // namespace
@@ -235,6 +240,8 @@ void RegisterPlanCommand(CommandRegistry* registry) {
                   app.add_option("--oracle-cache", args->oracle_cache,
                                  "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
                   app.add_flag("--no-refine", args->no_refine, "Keep the table's step parameters (skip SLSQP)");
+                  app.add_flag("--whole-body", args->whole_body,
+                               "Also optimise the whole-body trajectory (trajectory.json, trajectory.png in --out)");
                   return [args] { return Run(*args); };
                 });
 }
