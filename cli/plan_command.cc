@@ -25,6 +25,7 @@
 #include "file_checks.h"
 #include "numeric_option.h"
 #include "plan_image.h"
+#include "whole_body_output.h"
 #include "progress_bar.h"
 
 namespace cairn::cli {
@@ -40,6 +41,7 @@ struct PlanArguments {
   std::string out;
   std::string oracle_cache;
   bool no_refine{false};
+  bool whole_body{false};
 };
 
 // $XDG_CACHE_HOME/cairn/oracles, else ~/.cache/cairn/oracles, else a folder in the working directory.
@@ -54,7 +56,9 @@ std::string DefaultOracleCache() {
 }
 
 // The files `--out` holds; the folder is replaced as a whole (AtomicOutputDirectory).
-bool IsPlanOutput(const std::string& name) { return name == "plan.json" || name == "plan.png"; }
+bool IsPlanOutput(const std::string& name) {
+  return name == "plan.json" || name == "plan.png" || name == "trajectory.json" || name == "trajectory.png";
+}
 
 // The oracle from the cache folder, or built (with a progress bar) and saved there by
 // TransitionOracle::LoadOrBuild, which creates the folder. A cache that cannot be created or written is no reason
@@ -208,6 +212,7 @@ int Run(const PlanArguments& args) {
     refine_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
 
+  const int whole_body = args.whole_body ? RunWholeBody(scenario, plan, args.json, out ? &*out : nullptr) : 0;
   if (out) {
     out->WriteFile("plan.png", PlanImagePng(*terrain, plan, scenario.goal(), geometry));
     out->WriteFile("plan.json", PlanJson(scenario, plan, objective, refine_ms, false) + "\n");
@@ -219,7 +224,7 @@ int Run(const PlanArguments& args) {
     PrintSummary(scenario, plan, objective);
     if (out) std::printf("wrote      %s/plan.json, %s/plan.png\n", args.out.c_str(), args.out.c_str());
   }
-  return 0;
+  return whole_body;
 }
 
 }  // namespace
@@ -240,6 +245,8 @@ void RegisterPlanCommand(CommandRegistry* registry) {
                   app.add_option("--oracle-cache", args->oracle_cache,
                                  "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
                   app.add_flag("--no-refine", args->no_refine, "Keep the table's step parameters (skip SLSQP)");
+                  app.add_flag("--whole-body", args->whole_body,
+                               "Also optimise the whole-body trajectory (trajectory.json, trajectory.png in --out)");
                   return [args] { return Run(*args); };
                 });
 }

@@ -1,0 +1,121 @@
+// cairn.planning (whole-body part): the trajectory optimiser of thesis 2.5.1b -- options, environment boxes, the
+// WholeBodyTrajectory result, OptimizeWholeBodyTrajectory and the TrajectoryOptimizer system.
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "abstract_values.h"
+#include "bindings.h"
+#include "system_support.h"
+#include "cairn/multibody/model.h"
+#include "cairn/planning/trajectory/collision_penalty.h"
+#include "cairn/planning/trajectory/optimize_whole_body_trajectory.h"
+#include "cairn/planning/trajectory/trajectory_optimizer.h"
+#include "cairn/planning/trajectory/trajectory_optimizer_options.h"
+#include "cairn/planning/trajectory/whole_body_trajectory.h"
+
+namespace cairn::python {
+
+using namespace cairn::planning;
+
+void DefinePlanningTrajectory(py::module_ m) {
+  py::class_<EnvironmentBox>(m, "EnvironmentBox", "A fixed obstacle box of the whole-body problem.")
+      .def(py::init([](std::string name, const Eigen::Vector3d& size, const Eigen::Vector3d& center) {
+             EnvironmentBox box;
+             box.name = std::move(name);
+             box.size = size;
+             box.X_WB = multibody::Pose(Eigen::Matrix3d::Identity(), center);
+             return box;
+           }),
+           py::arg("name"), py::arg("size"), py::arg("center"), "An axis-aligned box (full side lengths, m).")
+      .def_readwrite("name", &EnvironmentBox::name, "Unique name.")
+      .def_readwrite("size", &EnvironmentBox::size, "Full side lengths, m.")
+      .def_property_readonly(
+          "center", [](const EnvironmentBox& box) { return Eigen::Vector3d(box.X_WB.translation()); },
+          "Centre, m.");
+
+  py::class_<TrajectoryOptimizerOptions>(m, "TrajectoryOptimizerOptions", "Parameters of problem (2.9).")
+      .def(py::init<>(), "The thesis' values (alpha = 50, d_safe = 2.5 cm), Ipopt.")
+      .def_readwrite("collision_weight", &TrajectoryOptimizerOptions::collision_weight, "Alpha of eq. 2.9a.")
+      .def_readwrite("d_safe", &TrajectoryOptimizerOptions::d_safe, "Penalty distance, m.")
+      .def_readwrite("self_margin", &TrajectoryOptimizerOptions::self_margin, "Link-link margin, m.")
+      .def_readwrite("samples_between", &TrajectoryOptimizerOptions::samples_between, "Collision samples.")
+      .def_readwrite("torque_weight", &TrajectoryOptimizerOptions::torque_weight, "Torque cost weight.")
+      .def_readwrite("smoothness_weight", &TrajectoryOptimizerOptions::smoothness_weight, "Smoothness weight.")
+      .def_readwrite("posture_weight", &TrajectoryOptimizerOptions::posture_weight, "Posture weight.")
+      .def_readwrite("com_margin", &TrajectoryOptimizerOptions::com_margin, "COM margin, m.")
+      .def_readwrite("ground_height", &TrajectoryOptimizerOptions::ground_height, "Ground plane, m (NaN: none).")
+      .def_readwrite("solver", &TrajectoryOptimizerOptions::solver, "Solver name (MakeSolver).")
+      .def_readwrite("max_iterations", &TrajectoryOptimizerOptions::max_iterations, "Iteration budget.")
+      .def_readwrite("tolerance", &TrajectoryOptimizerOptions::tolerance, "Solver tolerance.")
+      .def_readwrite("window_stances", &TrajectoryOptimizerOptions::window_stances, "0: whole plan.");
+
+  py::class_<WholeBodyWaypoint>(m, "WholeBodyWaypoint", "One waypoint q_t.")
+      .def_readonly("time", &WholeBodyWaypoint::time, "s.")
+      .def_readonly("stance", &WholeBodyWaypoint::stance, "Plan stance.")
+      .def_readonly("single_support", &WholeBodyWaypoint::single_support, "Mid-swing.")
+      .def_readonly("label", &WholeBodyWaypoint::label, "E.g. 'stance 3 start'.")
+      .def_readonly("q", &WholeBodyWaypoint::q, "Configuration.")
+      .def_readonly("contacts", &WholeBodyWaypoint::contacts, "Contact frames.")
+      .def_readonly("com", &WholeBodyWaypoint::com, "Centre of mass.")
+      .def_readonly("min_clearance", &WholeBodyWaypoint::min_clearance, "Smallest distance to the environment, m.");
+
+  py::class_<TrajectorySolveReport>(m, "TrajectorySolveReport", "How the solve went.")
+      .def_readonly("success", &TrajectorySolveReport::success, "Converged and feasible.")
+      .def_readonly("status", &TrajectorySolveReport::status, "Solver status.")
+      .def_readonly("solver", &TrajectorySolveReport::solver, "Solver name.")
+      .def_readonly("message", &TrajectorySolveReport::message, "One line, with the worst rows.")
+      .def_readonly("violations", &TrajectorySolveReport::violations, "Most violated rows, by name.")
+      .def_readonly("iterations", &TrajectorySolveReport::iterations, "Solver iterations.")
+      .def_readonly("windows", &TrajectorySolveReport::windows, "Problems solved.")
+      .def_readonly("seconds", &TrajectorySolveReport::seconds, "Wall time of the solves.")
+      .def_readonly("objective", &TrajectorySolveReport::objective, "Objective at the solution.")
+      .def_readonly("num_variables", &TrajectorySolveReport::num_variables, "Variables.")
+      .def_readonly("num_constraints", &TrajectorySolveReport::num_constraints, "Constraint rows.");
+
+  py::class_<WholeBodyTrajectory>(m, "WholeBodyTrajectory", "The whole-body optimiser's output.")
+      .def(py::init<>(), "Empty.")
+      .def_readonly("found", &WholeBodyTrajectory::found, "True if the solve succeeded.")
+      .def_readonly("coordinate_names", &WholeBodyTrajectory::coordinate_names, "Names of q's entries.")
+      .def_readonly("waypoints", &WholeBodyTrajectory::waypoints, "Waypoints.")
+      .def_readonly("report", &WholeBodyTrajectory::report, "Solver report.");
+
+  m.def(
+      "OptimizeWholeBodyTrajectory",
+      [](const multibody::Model& model, const FootstepPlan& plan, const std::vector<EnvironmentBox>& environment,
+         const TrajectoryOptimizerOptions& options) {
+        auto shared = std::make_shared<const multibody::Model>(model);
+        py::gil_scoped_release release;
+        return OptimizeWholeBodyTrajectory(std::move(shared), plan, environment, options);
+      },
+      py::arg("model"), py::arg("plan"), py::arg("environment") = std::vector<EnvironmentBox>(),
+      py::arg("options") = TrajectoryOptimizerOptions(),
+      "Solves problem (2.9) for a footstep plan (a copy of the model is kept for the call).");
+
+  py::class_<TrajectoryOptimizer, systems::LeafSystem>(
+      m, "TrajectoryOptimizer",
+      "System: inputs `plan` (FootstepPlan), `environment` (list of EnvironmentBox); output `trajectory` "
+      "(WholeBodyTrajectory), solved at initialization, on forced events and every `period` s when positive.")
+      .def(py::init([](const multibody::Model& model, const TrajectoryOptimizerOptions& options, double period) {
+             return std::make_unique<TrajectoryOptimizer>(std::make_shared<const multibody::Model>(model), options,
+                                                          period);
+           }),
+           py::arg("model"), py::arg("options") = TrajectoryOptimizerOptions(), py::arg("period") = 0.0,
+           "Keeps a copy of the model.")
+      .def("get_plan_input_port", PortGetter(&TrajectoryOptimizer::get_plan_input_port), "Input `plan`.")
+      .def("get_environment_input_port", PortGetter(&TrajectoryOptimizer::get_environment_input_port),
+           "Input `environment`.")
+      .def("get_trajectory_output_port", PortGetter(&TrajectoryOptimizer::get_trajectory_output_port),
+           "Output `trajectory`.");
+
+  RegisterBoundAbstractValueType<WholeBodyTrajectory>("WholeBodyTrajectory");
+  RegisterConvertedAbstractValueType<std::vector<EnvironmentBox>>("EnvironmentBoxes");
+}
+
+}  // namespace cairn::python

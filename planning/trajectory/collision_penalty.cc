@@ -1,0 +1,296 @@
+#include <cairn/planning/trajectory/collision_penalty.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include <cairn/common/number_text.h>
+#include <cairn/multibody/configuration.h>
+#include <cairn/multibody/data.h>
+#include <cairn/multibody/geometry.h>
+#include <cairn/multibody/joint.h>
+#include <cairn/multibody/joint_motion.h>
+#include <cairn/multibody/kinematics.h>
+#include <cairn/planning/trajectory/hessian_by_differences.h>
+
+namespace cairn::planning {
+
+namespace {
+const multibody::Model& Checked(const std::shared_ptr<const multibody::Model>& model, const std::string& name,
+                                double d_safe, double self_margin, double fraction) {
+  if (model == nullptr) throw std::invalid_argument(name + ": the robot model is null");
+  if (!(d_safe > 0.0) || !std::isfinite(d_safe)) {
+    throw std::invalid_argument(name + ": d_safe is " + FormatShort(d_safe) + "; give a positive distance in metres");
+  }
+  if (!(self_margin >= 0.0) || !std::isfinite(self_margin)) {
+    throw std::invalid_argument(name + ": self_margin is " + FormatShort(self_margin) +
+                                "; give a distance >= 0 in metres (0 disables self-collision)");
+  }
+  if (!(fraction >= 0.0 && fraction < 1.0)) {
+    throw std::invalid_argument(name + ": fraction is " + FormatShort(fraction) + "; it lies in [0, 1)");
+  }
+  return *model;
+}
+
+int NumInputs(const std::shared_ptr<const multibody::Model>& model, const std::string& name, double d_safe,
+              double self_margin, double fraction) {
+  const multibody::Model& m = Checked(model, name, d_safe, self_margin, fraction);
+  return fraction > 0.0 ? 2 * m.nq() : m.nq();
+}
+}  // namespace
+
+CollisionPenalty::CollisionPenalty(const std::string& name, std::shared_ptr<const multibody::Model> model,
+                                   const std::vector<EnvironmentBox>& environment,
+                                   const std::vector<std::string>& contact_bodies, double d_safe, double self_margin,
+                                   double fraction, double ground_height)
+    : optimization::Evaluator(name, NumInputs(model, name, d_safe, self_margin, fraction), 1,
+                              DensePattern(1, NumInputs(model, name, d_safe, self_margin, fraction)),
+                              optimization::DerivativeSource::kAnalytic),
+      model_(std::move(model)),
+      chart_(*model_),
+      ground_height_(ground_height),
+      d_safe_(d_safe),
+      self_margin_(self_margin),
+      fraction_(fraction),
+      sample_(fraction > 0.0),
+      world_(*model_) {
+  std::vector<int> all(static_cast<std::size_t>(num_inputs()));
+  for (int i = 0; i < num_inputs(); ++i) all[static_cast<std::size_t>(i)] = i;
+  DeclareHessianPattern(LowerTrianglePattern(all));
+  // Robot box pairs: their distance has no gradient where faces are parallel (and jumps between deepest
+  // vertices when they overlap), which stalls a Newton-type solver; the boxes' other shapes and the capsules still
+  // repel.
+  // Robot geometries come first, body by body in each body's order of shapes (CollisionWorld's numbering).
+  std::vector<int> robot_boxes;
+  int index = 0;
+  for (int b = 0; b < model_->num_bodies(); ++b) {
+    for (const multibody::Geometry& g : model_->body(b).collisions) {
+      if (g.type == multibody::GeometryType::kBox) robot_boxes.push_back(index);
+      ++index;
+    }
+  }
+  for (std::size_t a = 0; a < robot_boxes.size(); ++a) {
+    for (std::size_t b = a + 1; b < robot_boxes.size(); ++b) self_box_pairs_.insert({robot_boxes[a], robot_boxes[b]});
+  }
+  if (self_margin_ > 0.0) {
+    multibody::Data data(*model_);
+    multibody::ForwardKinematics(*model_, data, multibody::NeutralConfiguration(*model_));
+    world_.UpdatePoses(*model_, data);
+    for (const multibody::CollisionPair& pair : world_.PairsWithin(self_margin_)) {
+      world_.ExcludeGeometryPair(world_.geometry_name(pair.geometry_a), world_.geometry_name(pair.geometry_b));
+    }
+  }
+  for (const EnvironmentBox& box : environment) {
+    if (!(box.size.minCoeff() > 0.0) || !box.size.allFinite()) {
+      throw std::invalid_argument(name + ": environment box '" + box.name + "' has size (" + FormatShort(box.size.x()) +
+                                  ", " + FormatShort(box.size.y()) + ", " + FormatShort(box.size.z()) +
+                                  "); every side must be positive and finite");
+    }
+    world_.AddBox(box.name, box.size, box.X_WB);
+  }
+  for (const std::string& body : contact_bodies) contact_bodies_.insert(model_->GetBodyIndex(body));
+  if (std::isinf(ground_height_)) {
+    throw std::invalid_argument(name + ": ground_height is infinite; give a height in metres or NaN for no ground");
+  }
+  if (!std::isnan(ground_height_)) {
+    for (int b = 1; b < model_->num_bodies(); ++b) {
+      if (contact_bodies_.count(b) != 0) continue;
+      for (const multibody::Geometry& g : model_->body(b).collisions) {
+        switch (g.type) {
+          case multibody::GeometryType::kBox:
+            for (int corner = 0; corner < 8; ++corner) {
+              const Eigen::Vector3d sign((corner & 1) ? 0.5 : -0.5, (corner & 2) ? 0.5 : -0.5, (corner & 4) ? 0.5 : -0.5);
+              ground_points_.push_back({b, g.X_BG * Eigen::Vector3d(sign.cwiseProduct(g.size)), 0.0, g.name});
+            }
+            break;
+          case multibody::GeometryType::kSphere:
+            ground_points_.push_back({b, g.X_BG.translation(), g.radius, g.name});
+            break;
+          case multibody::GeometryType::kCapsule:
+          case multibody::GeometryType::kCylinder:  // bounded by the capsule of its radius (conservative)
+            for (const double end : {-0.5, 0.5}) {
+              ground_points_.push_back({b, g.X_BG * Eigen::Vector3d(0.0, 0.0, end * g.length), g.radius, g.name});
+            }
+            break;
+          case multibody::GeometryType::kMesh:
+            break;
+        }
+      }
+    }
+  }
+}
+
+double CollisionPenalty::GroundPenalty(const multibody::Data& data, Eigen::VectorXd* gradient) const {
+  double sum = 0.0;
+  for (const GroundPoint& point : ground_points_) {
+    const multibody::Pose& X_WB = data.X_world[static_cast<std::size_t>(point.body)];
+    const Eigen::Vector3d p_W = X_WB * point.p_B;
+    const double h = d_safe_ - (p_W.z() - point.radius - ground_height_);
+    if (h <= 0.0) continue;
+    sum += h * h;
+    if (gradient == nullptr) continue;
+    // d(z_p)/dv along every joint between the body and the root: the z velocity of p under each motion column.
+    for (int i = point.body; i > 0; i = model_->parent(i)) {
+      const multibody::Joint& joint = model_->joint(i);
+      const multibody::Pose& X = data.X_world[static_cast<std::size_t>(i)];
+      for (int k = 0; k < joint.nv; ++k) {
+        const multibody::Vector6d s = X.ActMotion(multibody::internal::MotionSubspaceColumn(joint, k));
+        (*gradient)(joint.idx_v + k) -= 2.0 * h * (s.tail<3>() + s.head<3>().cross(p_W)).z();
+      }
+    }
+  }
+  return sum;
+}
+
+double CollisionPenalty::GroundDistance(const multibody::Data& data, std::string* which) const {
+  double best = std::numeric_limits<double>::infinity();
+  for (const GroundPoint& point : ground_points_) {
+    const Eigen::Vector3d p_W = data.X_world[static_cast<std::size_t>(point.body)] * point.p_B;
+    const double d = p_W.z() - point.radius - ground_height_;
+    if (d < best) {
+      best = d;
+      if (which != nullptr) *which = point.name + " - ground";
+    }
+  }
+  return best;
+}
+
+CollisionPenalty::~CollisionPenalty() = default;
+
+void CollisionPenalty::DoEvalHessian(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                     const Eigen::Ref<const Eigen::VectorXd>& weights,
+                                     Eigen::Ref<Eigen::VectorXd> hessian_values) const {
+  if (!sample_) {
+    HessianByDifferences(*this, x, weights, hessian_pattern(), hessian_values);
+    return;
+  }
+  // f(q_a, q_b) = g((1 - s) q_a + s q_b): differentiate g once at the blended point and scale its blocks, half
+  // the Jacobian evaluations of differencing over both waypoints.
+  const int nq = model_->nq();
+  const Eigen::VectorXd blended = (1.0 - fraction_) * x.head(nq) + fraction_ * x.tail(nq);
+  Eigen::VectorXd stacked(2 * nq);
+  stacked << blended, blended;
+  // The gradient of f at (blended, blended) is ((1 - s) grad g, s grad g), so differencing f along the first block
+  // only, with weights divided by (1 - s), gives Hessian(g) there.
+  std::vector<int> first(static_cast<std::size_t>(nq));
+  for (int i = 0; i < nq; ++i) first[static_cast<std::size_t>(i)] = i;
+  const std::vector<optimization::SparsityEntry> block = LowerTrianglePattern(first);
+  Eigen::VectorXd g_values(static_cast<Eigen::Index>(block.size()));
+  HessianByDifferences(*this, stacked, weights / ((1.0 - fraction_) * (1.0 - fraction_)), block, g_values);
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(nq, nq);
+  for (std::size_t k = 0; k < block.size(); ++k) {
+    H(block[k].row, block[k].col) = H(block[k].col, block[k].row) = g_values(static_cast<Eigen::Index>(k));
+  }
+  const std::vector<optimization::SparsityEntry>& pattern = hessian_pattern();
+  for (std::size_t k = 0; k < pattern.size(); ++k) {
+    const int r = pattern[k].row, c = pattern[k].col;
+    const double wr = r < nq ? 1.0 - fraction_ : fraction_, wc = c < nq ? 1.0 - fraction_ : fraction_;
+    hessian_values(static_cast<Eigen::Index>(k)) = wr * wc * H(r % nq, c % nq);
+  }
+}
+
+Eigen::VectorXd CollisionPenalty::Configuration(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  const int nq = model_->nq();
+  if (!sample_) return chart_.Normalized(x);
+  const Eigen::VectorXd q = (1.0 - fraction_) * x.head(nq) + fraction_ * x.tail(nq);
+  return chart_.Normalized(q);
+}
+
+std::vector<std::pair<multibody::CollisionPair, double>> CollisionPenalty::Pairs(const Eigen::VectorXd& q,
+                                                                                 multibody::Data* data,
+                                                                                 double scale) const {
+  multibody::ForwardKinematics(*model_, *data, q);
+  world_.UpdatePoses(*model_, *data);
+  std::vector<std::pair<multibody::CollisionPair, double>> kept;
+  for (const multibody::CollisionPair& pair : world_.PairsWithin(scale * std::max(d_safe_, self_margin_))) {
+    const bool a_env = world_.geometry_body(pair.geometry_a) < 0, b_env = world_.geometry_body(pair.geometry_b) < 0;
+    double margin = self_margin_;
+    if (a_env != b_env) {
+      const int robot = world_.geometry_body(a_env ? pair.geometry_b : pair.geometry_a);
+      if (contact_bodies_.count(robot) != 0) continue;
+      margin = d_safe_;
+    } else if (self_margin_ <= 0.0 || self_box_pairs_.count({pair.geometry_a, pair.geometry_b}) != 0) {
+      continue;
+    }
+    if (pair.result.distance < scale * margin) kept.emplace_back(pair, margin);
+  }
+  return kept;
+}
+
+std::vector<multibody::CollisionPair> CollisionPenalty::PairsWithinMargin(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  const Eigen::VectorXd q = Configuration(x);
+  multibody::Data data(*model_);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<multibody::CollisionPair> out;
+  for (const auto& [pair, margin] : Pairs(q, &data)) out.push_back(pair);
+  return out;
+}
+
+double CollisionPenalty::MinimumEnvironmentDistance(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                                    std::string* which) const {
+  const Eigen::VectorXd q = Configuration(x);
+  multibody::Data data(*model_);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  double best = std::numeric_limits<double>::infinity();
+  if (which != nullptr) which->clear();
+  for (const auto& [pair, margin] : Pairs(q, &data, 10.0)) {
+    const bool a_env = world_.geometry_body(pair.geometry_a) < 0, b_env = world_.geometry_body(pair.geometry_b) < 0;
+    if (a_env == b_env || pair.result.distance >= best) continue;
+    best = pair.result.distance;
+    if (which != nullptr) *which = world_.geometry_name(pair.geometry_a) + " - " + world_.geometry_name(pair.geometry_b);
+  }
+  std::string ground;
+  const double d = GroundDistance(data, &ground);
+  if (d < best && d < 10.0 * d_safe_) {
+    best = d;
+    if (which != nullptr) *which = ground;
+  }
+  return best;
+}
+
+void CollisionPenalty::DoEval(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const {
+  const Eigen::VectorXd q = Configuration(x);
+  multibody::Data data(*model_);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  double sum = 0.0;
+  for (const auto& [pair, margin] : Pairs(q, &data)) {
+    const double h = margin - pair.result.distance;
+    sum += h * h;
+  }
+  y(0) = sum + GroundPenalty(data, nullptr);
+}
+
+void CollisionPenalty::DoEvalWithJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y,
+                                          Eigen::Ref<Eigen::VectorXd> jacobian_values) const {
+  const int nq = model_->nq();
+  const int nv = model_->nv();
+  const Eigen::VectorXd q = Configuration(x);
+  multibody::Data data(*model_);
+  Eigen::VectorXd gradient_v = Eigen::VectorXd::Zero(nv);
+  Eigen::VectorXd pair_gradient(nv);
+  double sum = 0.0;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& [pair, margin] : Pairs(q, &data)) {
+      const double h = margin - pair.result.distance;
+      sum += h * h;
+      world_.DistanceGradient(*model_, data, pair, pair_gradient);
+      gradient_v -= 2.0 * h * pair_gradient;
+    }
+  }
+  sum += GroundPenalty(data, &gradient_v);
+  y(0) = sum;
+  if (!sample_) {
+    jacobian_values = chart_.TangentToCoordinates(x, gradient_v.transpose()).row(0).transpose();
+    return;
+  }
+  // The sample reads normalise((1 - s) q_a + s q_b): the chart at the blended raw point, times the blend weights.
+  const Eigen::VectorXd blended = (1.0 - fraction_) * x.head(nq) + fraction_ * x.tail(nq);
+  const Eigen::VectorXd g_q = chart_.TangentToCoordinates(blended, gradient_v.transpose()).row(0).transpose();
+  jacobian_values.head(nq) = (1.0 - fraction_) * g_q;
+  jacobian_values.tail(nq) = fraction_ * g_q;
+}
+
+}  // namespace cairn::planning

@@ -1,0 +1,167 @@
+// Problem (2.9) on a straight plan: gradients of the whole program, and the solution's constraints.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include <cairn/multibody/center_of_mass.h>
+#include <cairn/multibody/data.h>
+#include <cairn/multibody/kinematics.h>
+#include <cairn/optimization/check_gradients.h>
+#include <cairn/planning/trajectory/frame_pose_error.h>
+#include <cairn/planning/trajectory/optimize_whole_body_trajectory.h>
+#include <cairn/planning/trajectory/trajectory_problem.h>
+#include <cairn/planning/trajectory/waypoint_spec.h>
+
+#include "expect_throws.h"
+#include "test_robot.h"
+
+namespace cairn::planning {
+namespace {
+
+TEST(WaypointSpecTest, AlternatesDoubleAndSingleSupportWithThePersistingFootAsSupport) {
+  const auto specs = MakeWaypointSpecs(test::StraightPlan(3, 0.2), TrajectoryOptimizerOptions());
+  ASSERT_EQ(specs.size(), 7u);
+  EXPECT_EQ(specs[0].label, "stance 0 start");
+  EXPECT_EQ(specs[1].label, "stance 0 mid-swing");
+  EXPECT_EQ(specs[0].contacts.size(), 2u);
+  ASSERT_EQ(specs[1].contacts.size(), 1u);
+  EXPECT_EQ(specs[1].contacts[0].frame, "l_sole");  // the right foot swings first
+  EXPECT_EQ(specs[0].supports[0].frame, "l_sole");
+  EXPECT_NEAR(specs[1].time, 0.5, 1e-12);
+  EXPECT_NEAR(specs[2].time, 0.8, 1e-12);
+  EXPECT_EQ(specs[6].supports.size(), 2u);            // the final stance: both feet, half the weight each
+  EXPECT_EQ(specs[6].polygon_vertices.size(), 4u);    // hull of two aligned rectangles
+  FootstepPlan missing;
+  CAIRN_EXPECT_THROWS_WITH(MakeWaypointSpecs(missing, TrajectoryOptimizerOptions()), std::invalid_argument,
+                           "not found");
+  FootstepPlan untimed = test::StraightPlan(1, 0.2);
+  untimed.steps[0].transition.parameters.t_sw = 0.0;
+  CAIRN_EXPECT_THROWS_WITH(MakeWaypointSpecs(untimed, TrajectoryOptimizerOptions()), std::invalid_argument,
+                           "step 1 has t_ds = 0.2 s and t_sw = 0 s");
+}
+
+TEST(TrajectoryProblemTest, EveryCostAndConstraintHasExactGradientsAtTheWarmStart) {
+  const auto model = test::Humanoid();
+  TrajectoryOptimizerOptions options;
+  const auto specs = MakeWaypointSpecs(test::StraightPlan(1, 0.2), options);
+  // A bar over the path close to the head, so collision terms are active.
+  const std::vector<EnvironmentBox> bar = {
+      {"bar", Eigen::Vector3d(0.1, 2.0, 0.1), multibody::Pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.1, 0, 1.45))}};
+  const TrajectoryProblem problem(model, specs, bar, options);
+  const Eigen::VectorXd x = problem.DecisionVector(problem.WarmStart());
+  const auto check = optimization::CheckGradients(problem.program(), x, 1e-5);
+  EXPECT_TRUE(check.passed) << check.ToString();
+}
+
+void ExpectSolutionHoldsTheConstraints(const WholeBodyTrajectory& trajectory, const FootstepPlan& plan,
+                                       const TrajectoryOptimizerOptions& options) {
+  const auto model = test::Humanoid();
+  const auto specs = MakeWaypointSpecs(plan, options);
+  ASSERT_EQ(trajectory.waypoints.size(), specs.size());
+  for (std::size_t t = 0; t < specs.size(); ++t) {
+    const WholeBodyWaypoint& w = trajectory.waypoints[t];
+    SCOPED_TRACE(w.label);
+    for (const WaypointContact& c : specs[t].contacts) {
+      const Eigen::VectorXd e = FramePoseError(model, c.frame, c.X_WF).Eval(w.q);
+      EXPECT_LE(e.head<3>().norm(), 1e-4) << c.frame;
+      EXPECT_LE(e.tail<3>().norm(), 1e-3) << c.frame;
+    }
+    multibody::Data data(*model);
+    const Eigen::Vector3d com = multibody::CenterOfMass(*model, data, w.q);
+    EXPECT_LE((specs[t].polygon_A * com.head<2>() - specs[t].polygon_b).maxCoeff(), 1e-6);
+    EXPECT_GE(w.min_clearance, options.d_safe - 0.01);
+    EXPECT_TRUE(multibody::IsWithinPositionLimits(*model, w.q, 1e-6));
+    if (t > 0) {
+      const double dt = w.time - trajectory.waypoints[t - 1].time;
+      const Eigen::VectorXd dq = w.q - trajectory.waypoints[t - 1].q;
+      for (int j = 1; j < static_cast<int>(model->joints().size()); ++j) {
+        if (model->joint(j).nq != 1) continue;
+        EXPECT_LE(std::abs(dq(model->joint(j).idx_q)), model->joint(j).velocity_limit * dt + 1e-6) << model->joint(j).name;
+      }
+    }
+  }
+}
+
+TEST(OptimizeWholeBodyTrajectoryTest, SolvesAStraightPlanWithinEveryConstraint) {
+  const auto model = test::Humanoid();
+  const FootstepPlan plan = test::StraightPlan(3, 0.2);
+  TrajectoryOptimizerOptions options;
+  const WholeBodyTrajectory trajectory = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  ASSERT_TRUE(trajectory.found) << trajectory.report.message;
+  EXPECT_EQ(trajectory.report.windows, 1);
+  EXPECT_GT(trajectory.report.iterations, 0);
+  ExpectSolutionHoldsTheConstraints(trajectory, plan, options);
+}
+
+}  // namespace
+}  // namespace cairn::planning
+
+namespace cairn::planning {
+namespace {
+
+TEST(OptimizeWholeBodyTrajectoryTest, SlsqpByNameGivesTheSamePostureOnOneStance) {
+  const auto model = test::Humanoid();
+  // The start stance only (one waypoint), staggered and turned: a symmetric stance has a symmetric stationary
+  // point that is a saddle (the pelvis can yaw either way), where a quasi-Newton method that never sees an
+  // asymmetric gradient stays.
+  FootstepPlan plan = test::StraightPlan(0, 0.2);
+  plan.start.left = {0.08, 0.12, 0.0, 0.25};
+  TrajectoryOptimizerOptions options;
+  const WholeBodyTrajectory ipopt = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  options.solver = "nlopt:SLSQP";
+  const WholeBodyTrajectory slsqp = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  ASSERT_TRUE(ipopt.found) << ipopt.report.message;
+  ASSERT_TRUE(slsqp.found) << slsqp.report.message;
+  EXPECT_EQ(ipopt.report.solver, "ipopt");
+  EXPECT_EQ(slsqp.report.solver, "nlopt:LD_SLSQP");
+  ASSERT_EQ(ipopt.waypoints.size(), 1u);
+  ASSERT_EQ(slsqp.waypoints.size(), 1u);
+  EXPECT_NEAR(ipopt.report.objective, slsqp.report.objective, 1e-4 * std::max(1.0, ipopt.report.objective));
+  EXPECT_LT((ipopt.waypoints[0].q - slsqp.waypoints[0].q).cwiseAbs().maxCoeff(), 1e-2)
+      << "ipopt " << ipopt.waypoints[0].q.transpose() << "\nslsqp " << slsqp.waypoints[0].q.transpose();
+  EXPECT_LT((ipopt.waypoints[0].com - slsqp.waypoints[0].com).norm(), 1e-4);
+}
+
+TEST(OptimizeWholeBodyTrajectoryTest, AStanceOutOfReachIsAResultThatNamesTheStance) {
+  const auto model = test::Humanoid();
+  FootstepPlan plan = test::StraightPlan(2, 0.2);
+  plan.steps[0].pose.x = 1.5;  // the right foot's first step lands 1.5 m ahead
+  TrajectoryOptimizerOptions options;
+  options.max_iterations = 150;
+  const WholeBodyTrajectory trajectory = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  EXPECT_FALSE(trajectory.found);
+  EXPECT_FALSE(trajectory.report.success);
+  ASSERT_FALSE(trajectory.report.violations.empty()) << trajectory.report.message;
+  EXPECT_NE(trajectory.report.violations.front().find("stance 1 start, "), std::string::npos)
+      << trajectory.report.message;
+  EXPECT_NE(trajectory.report.message.find("most violated: stance 1 start"), std::string::npos)
+      << trajectory.report.message;
+  EXPECT_EQ(trajectory.waypoints.size(), 5u);  // the best point is still returned
+}
+
+TEST(OptimizeWholeBodyTrajectoryTest, AMissingPlanIsAResultNotAnError) {
+  FootstepPlan plan;
+  plan.reason = "goal unreachable";
+  const WholeBodyTrajectory trajectory = OptimizeWholeBodyTrajectory(test::Humanoid(), plan, {});
+  EXPECT_FALSE(trajectory.found);
+  EXPECT_EQ(trajectory.report.status, "no footstep plan");
+  EXPECT_NE(trajectory.report.message.find("goal unreachable"), std::string::npos);
+  TrajectoryOptimizerOptions bad;
+  bad.d_safe = -1.0;
+  CAIRN_EXPECT_THROWS_WITH(OptimizeWholeBodyTrajectory(test::Humanoid(), test::StraightPlan(1, 0.2), {}, bad),
+                           std::invalid_argument, "d_safe is -1");
+}
+
+TEST(OptimizeWholeBodyTrajectoryTest, ARecedingWindowKeepsContinuityAndTheConstraints) {
+  const auto model = test::Humanoid();
+  const FootstepPlan plan = test::StraightPlan(3, 0.2);
+  TrajectoryOptimizerOptions options;
+  options.window_stances = 2;
+  const WholeBodyTrajectory trajectory = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  ASSERT_TRUE(trajectory.found) << trajectory.report.message;
+  EXPECT_EQ(trajectory.report.windows, 3);
+  ExpectSolutionHoldsTheConstraints(trajectory, plan, options);
+}
+
+}  // namespace
+}  // namespace cairn::planning

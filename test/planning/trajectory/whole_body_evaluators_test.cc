@@ -1,0 +1,200 @@
+// Gradient checks and values of the whole-body evaluators of problem (2.9).
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include <cairn/multibody/center_of_mass.h>
+#include <cairn/multibody/configuration.h>
+#include <cairn/multibody/data.h>
+#include <cairn/multibody/kinematics.h>
+#include <cairn/optimization/check_gradients.h>
+#include <cairn/planning/trajectory/center_of_mass_projection.h>
+#include <cairn/planning/trajectory/collision_penalty.h>
+#include <cairn/planning/trajectory/configuration_chart.h>
+#include <cairn/planning/trajectory/frame_pose_error.h>
+#include <cairn/planning/trajectory/quaternion_norm_error.h>
+#include <cairn/planning/trajectory/static_torque_residual.h>
+#include <cairn/planning/trajectory/waist_roll_error.h>
+
+#include "expect_throws.h"
+#include "test_robot.h"
+
+namespace cairn::planning {
+namespace {
+
+using optimization::CheckGradients;
+using test::Humanoid;
+
+// A random configuration with a deliberately non-unit quaternion (the evaluators read it normalised).
+Eigen::VectorXd RandomPoint(unsigned seed, double quaternion_scale = 1.3) {
+  std::mt19937 rng(seed);
+  Eigen::VectorXd q = multibody::RandomConfiguration(*Humanoid(), rng, 0.5);
+  q.segment<4>(3) *= quaternion_scale;
+  return q;
+}
+
+Eigen::VectorXd JointScale() {
+  const ConfigurationChart chart(*Humanoid());
+  Eigen::VectorXd scale(static_cast<Eigen::Index>(chart.joint_velocities().size()));
+  for (std::size_t i = 0; i < chart.joint_velocities().size(); ++i) {
+    scale(static_cast<Eigen::Index>(i)) = 1.0 / Humanoid()->effort_limits()(chart.joint_velocities()[i]);
+  }
+  return scale;
+}
+
+TEST(ConfigurationChartTest, NormalisesTheQuaternionAndRejectsAZeroOne) {
+  const ConfigurationChart chart(*Humanoid());
+  EXPECT_TRUE(chart.has_floating_base());
+  Eigen::VectorXd q = RandomPoint(1, 2.0);
+  EXPECT_NEAR(chart.Normalized(q).segment<4>(3).norm(), 1.0, 1e-14);
+  q.segment<4>(3).setZero();
+  CAIRN_EXPECT_THROWS_WITH(chart.Normalized(q), std::invalid_argument, "quaternion has norm 0");
+}
+
+TEST(FramePoseErrorTest, IsZeroAtTheFramePoseAndItsJacobianMatchesFiniteDifferences) {
+  const auto model = Humanoid();
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const Eigen::VectorXd q = RandomPoint(seed);
+    multibody::Data data(*model);
+    multibody::ForwardKinematics(*model, data, ConfigurationChart(*model).Normalized(q));
+    const multibody::Pose X = multibody::FramePose(*model, data, model->GetFrameIndex("l_sole"));
+    const FramePoseError at(model, "l_sole", X);
+    EXPECT_LT(at.Eval(q).norm(), 1e-12);
+    // A target rotated by about 0.4 rad and moved, so the rotation rows are far from the identity.
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    const FramePoseError error(model, "l_sole", multibody::Pose(X.rotation() * R, X.translation() + Eigen::Vector3d(0.1, 0, 0)));
+    EXPECT_NEAR(error.Eval(q).tail<3>().norm(), 0.4, 1e-9);
+    const auto check = CheckGradients(error, q, 1e-6);
+    EXPECT_TRUE(check.passed) << check.ToString();
+  }
+  CAIRN_EXPECT_THROWS_WITH(FramePoseError(model, "l_sol", multibody::Pose()), std::invalid_argument, "l_sol");
+}
+
+TEST(CenterOfMassProjectionTest, GivesAComAndItsJacobian) {
+  const auto model = Humanoid();
+  const Eigen::VectorXd q = RandomPoint(4);
+  multibody::Data data(*model);
+  const Eigen::Vector3d com = multibody::CenterOfMass(*model, data, ConfigurationChart(*model).Normalized(q));
+  Eigen::MatrixXd A(3, 2);
+  A << 1, 0, 0, 1, 0.6, -0.8;
+  const CenterOfMassProjection projection(model, A, Eigen::Vector3d(0.1, 0.2, 0.3));
+  EXPECT_LT((projection.Eval(q) - (A * com.head<2>() - Eigen::Vector3d(0.1, 0.2, 0.3))).norm(), 1e-12);
+  const auto check = CheckGradients(projection, q, 1e-6);
+  EXPECT_TRUE(check.passed) << check.ToString();
+  CAIRN_EXPECT_THROWS_WITH(CenterOfMassProjection(model, Eigen::MatrixXd(2, 3)), std::invalid_argument, "2 columns");
+}
+
+TEST(WaistRollErrorTest, IsZeroForPitchAndYawAndItsJacobianMatchesFiniteDifferences) {
+  const auto model = Humanoid();
+  const WaistRollError roll(model, "pelvis");
+  Eigen::VectorXd q = test::BentKneePosture(*model);
+  const Eigen::Quaterniond pitch_yaw(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()) *
+                                     Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
+  q.segment<4>(3) << pitch_yaw.w(), pitch_yaw.x(), pitch_yaw.y(), pitch_yaw.z();
+  EXPECT_NEAR(roll.Eval(q)(0), 0.0, 1e-12);
+  // The waist joint's own roll moves the torso, not the pelvis (the thesis' waist link).
+  q(model->joint(model->GetJointIndex("waist_roll")).idx_q) = 0.2;
+  EXPECT_NEAR(roll.Eval(q)(0), 0.0, 1e-12);
+  const Eigen::Quaterniond rolled(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()) *
+                                  Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX()));
+  q.segment<4>(3) << rolled.w(), rolled.x(), rolled.y(), rolled.z();
+  EXPECT_NEAR(roll.Eval(q)(0), std::sin(0.2) * std::cos(0.3), 1e-9);
+  for (unsigned seed = 5; seed <= 6; ++seed) {
+    const auto check = CheckGradients(roll, RandomPoint(seed), 1e-6);
+    EXPECT_TRUE(check.passed) << check.ToString();
+  }
+}
+
+TEST(QuaternionNormErrorTest, GradientAndHessianMatchFiniteDifferences) {
+  const QuaternionNormError norm;
+  const Eigen::Vector4d x(0.9, 0.1, -0.3, 0.2);
+  EXPECT_NEAR(norm.Eval(x)(0), x.squaredNorm() - 1.0, 1e-15);
+  const auto check = CheckGradients(norm, x, 1e-6);
+  EXPECT_TRUE(check.passed) << check.ToString();
+}
+
+TEST(StaticTorqueResidualTest, SingleSupportTorquesAreThoseOfTheChainFromTheFoot) {
+  const auto model = Humanoid();
+  const ConfigurationChart chart(*model);
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(chart.joint_coordinates().size()));
+  const StaticTorqueResidual left(model, {{"l_sole", 1.0}}, ones);
+  const Eigen::VectorXd q = test::BentKneePosture(*model);
+  const Eigen::VectorXd tau = left.JointTorques(q);
+  // Standing on the left foot, the left knee holds nearly the whole weight; the right (swing) knee only its shank
+  // and foot: the pelvis-rooted gravity torques would make both small.
+  const auto knee = [&](const char* name) {
+    const int v = model->joint(model->GetJointIndex(name)).idx_v;
+    for (std::size_t i = 0; i < chart.joint_velocities().size(); ++i) {
+      if (chart.joint_velocities()[i] == v) return tau(static_cast<Eigen::Index>(i));
+    }
+    return 0.0;
+  };
+  EXPECT_GT(std::abs(knee("l_knee")), 10.0 * std::abs(knee("r_knee")));
+  // Pure vertical translation of the whole robot leaves the torques unchanged.
+  Eigen::VectorXd lifted = q;
+  lifted(2) += 0.3;
+  EXPECT_LT((left.JointTorques(lifted) - tau).norm(), 1e-9);
+  for (unsigned seed = 7; seed <= 9; ++seed) {
+    const StaticTorqueResidual shared(model, {{"l_sole", 0.3}, {"r_sole", 0.7}}, JointScale());
+    const auto check = CheckGradients(shared, RandomPoint(seed), 1e-6);
+    EXPECT_TRUE(check.passed) << check.ToString();
+  }
+  CAIRN_EXPECT_THROWS_WITH(StaticTorqueResidual(model, {{"l_sole", 0.5}}, ones), std::invalid_argument,
+                           "sum to 0.5");
+}
+
+TEST(CollisionPenaltyTest, PenalisesABarAtTheHeadWithAnExactGradient) {
+  const auto model = Humanoid();
+  Eigen::VectorXd q = test::BentKneePosture(*model);
+  multibody::Data data(*model);
+  multibody::ForwardKinematics(*model, data, q);
+  const Eigen::Vector3d head = data.X_world[static_cast<std::size_t>(model->GetBodyIndex("head"))].translation();
+  // A bar whose underside is 1 cm above the head sphere (centre 0.06 m above the head frame, radius 0.1 m).
+  EnvironmentBox bar{"bar", Eigen::Vector3d(0.1, 2.0, 0.1),
+                     multibody::Pose(Eigen::Matrix3d::Identity(), head + Eigen::Vector3d(0.0, 0, 0.06 + 0.1 + 0.01 + 0.05))};
+  const CollisionPenalty penalty("collision", model, {bar}, {"l_foot", "r_foot"}, 0.025, 0.01);
+  std::string which;
+  const double d = penalty.MinimumEnvironmentDistance(q, &which);
+  EXPECT_NEAR(d, 0.01, 1e-9) << which;
+  EXPECT_EQ(which, "head_sphere - bar");
+  // Only the bar pair is within its margin: the robot's own pairs closer than 1 cm at the neutral posture are
+  // excluded, the others are further apart.
+  ASSERT_EQ(penalty.PairsWithinMargin(q).size(), 1u);
+  EXPECT_NEAR(penalty.Eval(q)(0), 0.015 * 0.015, 1e-12);
+  Eigen::VectorXd perturbed = q;
+  perturbed.segment<4>(3) *= 1.2;
+  perturbed(model->joint(model->GetJointIndex("neck_pitch")).idx_q) = 0.1;
+  const auto check = CheckGradients(penalty, perturbed, 1e-6);
+  EXPECT_TRUE(check.passed) << check.ToString();
+  // Between two waypoints: the sample's gradient splits between them.
+  Eigen::VectorXd lowered = q;
+  lowered(2) -= 0.05;
+  Eigen::VectorXd both(2 * model->nq());
+  both << perturbed, lowered;
+  const CollisionPenalty sample("collision_sample", model, {bar}, {}, 0.025, 0.01, 0.5);
+  const auto sample_check = CheckGradients(sample, both, 1e-6);
+  EXPECT_TRUE(sample_check.passed) << sample_check.ToString();
+  // The ground plane, in closed form: a robot standing 1 cm too low has its soles' corners in the margin.
+  Eigen::VectorXd low = q;
+  low(2) -= 0.01 + 0.0;
+  const CollisionPenalty ground("ground", model, {}, {}, 0.025, 0.0, 0.0, /*ground_height=*/0.0);
+  multibody::ForwardKinematics(*model, data, low);
+  const double sole_z = data.X_world[static_cast<std::size_t>(model->GetBodyIndex("l_sole"))].translation().z();
+  std::string ground_pair;
+  EXPECT_NEAR(ground.MinimumEnvironmentDistance(low, &ground_pair), sole_z, 1e-9);
+  EXPECT_NE(ground_pair.find("sole_box - ground"), std::string::npos) << ground_pair;
+  for (unsigned seed = 11; seed <= 13; ++seed) {
+    Eigen::VectorXd random = RandomPoint(seed);
+    random(2) = 0.5;
+    const auto ground_check = CheckGradients(ground, random, 1e-5);
+    EXPECT_TRUE(ground_check.passed) << ground_check.ToString();
+  }
+  // Far away: zero penalty.
+  Eigen::VectorXd away = q;
+  away(0) += 3.0;
+  EXPECT_EQ(penalty.Eval(away)(0), 0.0);
+}
+
+}  // namespace
+}  // namespace cairn::planning
