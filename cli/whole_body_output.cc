@@ -17,6 +17,7 @@
 #include "cairn/multibody/urdf_parser.h"
 #include "cairn/planning/trajectory/environment_from_obstacles.h"
 #include "cairn/planning/trajectory/optimize_whole_body_trajectory.h"
+#include "data_directory.h"
 
 namespace cairn::cli {
 namespace {
@@ -132,7 +133,7 @@ int RunWholeBody(const planning::FootstepScenario& scenario, const planning::Foo
   multibody::UrdfOptions urdf;
   urdf.floating_base = true;
   const auto model = std::make_shared<const multibody::Model>(
-      multibody::ParseUrdfFile(std::string(CAIRN_DATA_DIR) + "/robots/cairn_humanoid.urdf", urdf));
+      multibody::ParseUrdfFile(DataDirectory() + "/robots/cairn_humanoid.urdf", urdf));
   const std::vector<planning::EnvironmentBox> environment = planning::EnvironmentFromObstacles(scenario.obstacles());
   const planning::WholeBodyTrajectory trajectory = planning::OptimizeWholeBodyTrajectory(model, plan, environment);
   if (out != nullptr) {
