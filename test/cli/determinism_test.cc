@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -49,10 +48,18 @@ std::string MaskWallTimes(const std::string& json, const std::vector<std::string
   std::string masked = json;
   *found = 0;
   for (const std::string& key : keys) {
-    const std::regex field("\"" + key + "\": -?[0-9.eE+-]+");
-    *found += static_cast<int>(std::distance(std::sregex_iterator(masked.begin(), masked.end(), field),
-                                             std::sregex_iterator()));
-    masked = std::regex_replace(masked, field, "\"" + key + "\": T");
+    const std::string field = "\"" + key + "\": ";
+    for (std::size_t at = masked.find(field); at != std::string::npos; at = masked.find(field, at)) {
+      const std::size_t value = at + field.size();
+      const std::size_t end = masked.find_first_not_of("-0123456789.eE+", value);
+      if (end == value) {  // not a number (e.g. a key that ends the same way): leave it
+        at = value;
+        continue;
+      }
+      masked.replace(value, end - value, "T");
+      ++*found;
+      at = value;
+    }
   }
   return masked;
 }
