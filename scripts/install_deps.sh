@@ -20,7 +20,7 @@ CORE_PACKAGES=(
   libeigen3-dev coinor-libipopt-dev libnlopt-cxx-dev libsuitesparse-dev libfcl-dev libccd-dev
   liburdfdom-dev libtinyxml-dev libopencv-dev libopencv-contrib-dev libbullet-dev libbullet-extras-dev
   pybind11-dev python3-dev python3-numpy libgtest-dev libgmock-dev libbenchmark-dev libyaml-cpp-dev
-  libcli11-dev nlohmann-json3-dev python3-pytest python3-matplotlib
+  libcli11-dev nlohmann-json3-dev python3-pytest python3-matplotlib libopenmpi-dev openmpi-bin
 )
 # Peers and reference data: used by cross-check tests and benchmarks only, never linked into Cairn's libraries.
 PEER_PACKAGES=(

@@ -21,13 +21,16 @@
 #include "cairn/common/atomic_file.h"
 #include "cairn/common/hash.h"
 #include "cairn/common/parallel_for.h"
+#include "cairn/common/internal/yaml_reader.h"
 
 namespace cairn::planning {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr const char* kMagic = "cairn-transition-oracle 1";
+constexpr const char* kMagic = "cairn-transition-oracle 2";
+constexpr const char* kMagicVersion1 = "cairn-transition-oracle 1";
 constexpr int kDoublesPerEntry = 9;
+static_assert(kDoublesPerEntry * 8 == TransitionOracle::kBytesPerEntry);
 // Lookups match a single-valued axis, and the grid's ends, within this distance.
 constexpr double kAxisTolerance = 1e-9;
 
@@ -93,6 +96,18 @@ std::string AxisLine(const char* name, const std::vector<double>& axis) {
   return line + "\n";
 }
 
+// The header lines after the magic that say what the entries depend on (and that Load checks).
+std::string HeaderFields(const std::string& robot, std::uint64_t model_hash, WalkingObjective objective,
+                         const OracleGrid& grid) {
+  std::string fields = "robot " + robot + "\n";
+  fields += "model_hash " + HashHex(model_hash) + "\n";
+  fields += std::string("objective ") + to_string(objective) + "\n";
+  fields += std::string("source ") + TransitionOracle::kSource + "\n";
+  fields += AxisLine("dx", grid.dx) + AxisLine("dy", grid.dy) + AxisLine("dz", grid.dz) +
+            AxisLine("dtheta", grid.dtheta) + AxisLine("mu", grid.mu);
+  return fields;
+}
+
 }  // namespace
 
 OracleGrid OracleGrid::Default(const WalkingModel& model) {
@@ -122,6 +137,37 @@ OracleGrid OracleGrid::Default(const WalkingModel& model) {
   return grid;
 }
 
+OracleGrid OracleGrid::Load(const std::string& path) {
+  const internal::YamlReader yaml(path);
+  yaml.CheckKeys(yaml.root(), {"dx", "dy", "dz", "dtheta", "mu"}, "the oracle grid");
+  auto axis = [&](const std::string& key) {
+    const YAML::Node value = yaml.Require(yaml.root(), key, "the oracle grid");
+    if (!value.IsMap()) return yaml.NumberList(value, key, kMaxAxisValues);
+    yaml.CheckKeys(value, {"from", "to", "step"}, key);
+    const double from = yaml.Number(value, "from", key);
+    const double to = yaml.Number(value, "to", key);
+    const double step = yaml.Number(value, "step", key);
+    if (!(step > 0.0)) yaml.Fail(value, key + ".step is " + FormatShort(step) + "; give a positive step");
+    if (to < from) yaml.Fail(value, key + ".to (" + FormatShort(to) + ") is below " + key + ".from (" + FormatShort(from) + ")");
+    const double count = std::floor((to - from) / step + 1e-9) + 1.0;
+    if (count > static_cast<double>(kMaxAxisValues)) {
+      yaml.Fail(value, key + " from " + FormatShort(from) + " to " + FormatShort(to) + " every " + FormatShort(step) +
+                           " has " + FormatShort(count) + " values, more than the limit of " +
+                           FormatShort(kMaxAxisValues) + "; use a larger step");
+    }
+    std::vector<double> values;
+    for (int k = 0; k < static_cast<int>(count); ++k) values.push_back(std::min(from + k * step, to));
+    return values;
+  };
+  OracleGrid grid;
+  grid.dx = axis("dx");
+  grid.dy = axis("dy");
+  grid.dz = axis("dz");
+  grid.dtheta = axis("dtheta");
+  grid.mu = axis("mu");
+  return grid;
+}
+
 void OracleGrid::Validate(const StepReach& reach) const {
   ValidateAxis(dx, "dx", reach.dx_min, reach.dx_max, false);
   ValidateAxis(dy, "dy", reach.dy_min, reach.dy_max, true);
@@ -136,24 +182,33 @@ bool operator==(const OracleGrid& a, const OracleGrid& b) {
 
 TransitionOracle TransitionOracle::Build(const WalkingModel& model, WalkingObjective objective,
                                          const OracleGrid& grid, const OracleBuildOptions& options) {
-  grid.Validate(model.reach());
-  const int threads = ResolveThreadCount(options.num_threads);
   const auto start = std::chrono::steady_clock::now();
-  TransitionOracle oracle;
-  oracle.grid_ = grid;
-  oracle.objective_ = objective;
-  oracle.robot_name_ = model.name();
-  oracle.model_hash_ = model.content_hash();
-  oracle.entries_.assign(grid.num_entries(), Entry{});
+  TransitionOracle oracle =
+      FromEntries(model, objective, grid, BuildCells(model, objective, grid, 0, grid.num_displacements(), options));
+  oracle.build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return oracle;
+}
 
-  const std::size_t cells = grid.num_displacements();
-  const std::size_t num_mu = grid.mu.size();
-  const std::size_t total = grid.num_entries();
-  if (cells > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-    throw std::invalid_argument("TransitionOracle::Build: the grid has " + cairn::FormatShort(cells) +
+std::vector<TransitionOracle::Entry> TransitionOracle::BuildCells(const WalkingModel& model, WalkingObjective objective,
+                                                                  const OracleGrid& grid, std::size_t first_cell,
+                                                                  std::size_t num_cells,
+                                                                  const OracleBuildOptions& options) {
+  grid.Validate(model.reach());
+  const std::size_t all_cells = grid.num_displacements();
+  if (first_cell > all_cells || num_cells > all_cells - first_cell) {
+    throw std::invalid_argument("TransitionOracle::BuildCells: cells [" + cairn::FormatShort(first_cell) + ", " +
+                                cairn::FormatShort(first_cell + num_cells) + ") lie outside the grid's " +
+                                cairn::FormatShort(all_cells) + " displacement cells");
+  }
+  if (num_cells > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw std::invalid_argument("TransitionOracle::Build: the grid has " + cairn::FormatShort(num_cells) +
                                 " step displacements, more than the " +
                                 cairn::FormatShort(std::numeric_limits<int>::max()) + " supported; use fewer axis values.");
   }
+  const int threads = ResolveThreadCount(options.num_threads);
+  const std::size_t num_mu = grid.mu.size();
+  const std::size_t total = num_cells * num_mu;
+  std::vector<Entry> out(total, Entry{});
   std::mutex progress_mutex;
   std::size_t done = 0;
   std::atomic<int> first_failure{std::numeric_limits<int>::max()};
@@ -161,9 +216,9 @@ TransitionOracle TransitionOracle::Build(const WalkingModel& model, WalkingObjec
   // One band per displacement, started in order by whichever thread is free (the cells' optimisations take very
   // different times). After a failure, cells above the failing one are skipped; cells below it still run, so the
   // exception rethrown is always that of the lowest failing cell.
-  ParallelForBands(static_cast<int>(cells), static_cast<int>(cells), threads, [&](int band, int, int) {
+  ParallelForBands(static_cast<int>(num_cells), static_cast<int>(num_cells), threads, [&](int band, int, int) {
     if (band > first_failure.load()) return;
-    const std::size_t cell = static_cast<std::size_t>(band);
+    const std::size_t cell = first_cell + static_cast<std::size_t>(band);
     try {
       std::size_t rest = cell;
       const std::size_t i_th = rest % grid.dtheta.size();
@@ -173,7 +228,7 @@ TransitionOracle TransitionOracle::Build(const WalkingModel& model, WalkingObjec
       const std::size_t i_dy = rest % grid.dy.size();
       const std::size_t i_dx = rest / grid.dy.size();
       const StepDisplacement d{grid.dx[i_dx], grid.dy[i_dy], grid.dz[i_dz], grid.dtheta[i_th]};
-      Entry* entries = &oracle.entries_[cell * num_mu];
+      Entry* entries = &out[static_cast<std::size_t>(band) * num_mu];
       // From the largest mu down. An optimum that already meets a smaller mu is optimal there too; otherwise
       // SLSQP follows the optimum from the previous mu, with the global search as the fallback. A step that
       // is infeasible at some mu is infeasible at every smaller one (the constraint only tightens).
@@ -208,9 +263,68 @@ TransitionOracle TransitionOracle::Build(const WalkingModel& model, WalkingObjec
     done += num_mu;
     if (options.progress) options.progress(done, total);
   });
+  return out;
+}
+
+TransitionOracle TransitionOracle::FromEntries(const WalkingModel& model, WalkingObjective objective,
+                                               const OracleGrid& grid, std::vector<Entry> entries) {
+  grid.Validate(model.reach());
+  if (entries.size() != grid.num_entries()) {
+    throw std::invalid_argument("TransitionOracle::FromEntries: " + cairn::FormatShort(entries.size()) +
+                                " entries for a grid of " + cairn::FormatShort(grid.num_entries()) +
+                                "; give one per displacement and mu value");
+  }
+  TransitionOracle oracle;
+  oracle.grid_ = grid;
+  oracle.objective_ = objective;
+  oracle.robot_name_ = model.name();
+  oracle.model_hash_ = model.content_hash();
+  oracle.entries_ = std::move(entries);
   oracle.Finalize();
-  oracle.build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return oracle;
+}
+
+std::string TransitionOracle::EncodeEntries(const std::vector<Entry>& entries) {
+  std::string payload;
+  payload.reserve(entries.size() * kDoublesPerEntry * 8);
+  for (const Entry& e : entries) {
+    PutDouble(payload, e.feasible ? 1.0 : 0.0);
+    PutDouble(payload, e.cost);
+    PutDouble(payload, e.parameters.t_ds);
+    PutDouble(payload, e.parameters.t_sw);
+    PutDouble(payload, e.parameters.com_height);
+    PutDouble(payload, e.com_work);
+    PutDouble(payload, e.heat);
+    PutDouble(payload, e.rcof);
+    PutDouble(payload, e.duration);
+  }
+  return payload;
+}
+
+std::vector<TransitionOracle::Entry> TransitionOracle::DecodeEntries(std::string_view bytes, std::size_t count) {
+  const std::size_t per_entry = kDoublesPerEntry * 8;
+  if (count > bytes.size() / per_entry || bytes.size() != count * per_entry) {
+    throw std::invalid_argument("TransitionOracle::DecodeEntries: " + cairn::FormatShort(bytes.size()) +
+                                " bytes do not hold " + cairn::FormatShort(count) + " entries of " +
+                                cairn::FormatShort(per_entry) + " bytes");
+  }
+  std::vector<Entry> entries(count);
+  const char* p = bytes.data();
+  for (Entry& e : entries) {
+    e.feasible = GetDouble(p) != 0.0;
+    e.cost = GetDouble(p + 8);
+    e.parameters = StepParameters{GetDouble(p + 16), GetDouble(p + 24), GetDouble(p + 32)};
+    e.com_work = GetDouble(p + 40);
+    e.heat = GetDouble(p + 48);
+    e.rcof = GetDouble(p + 56);
+    e.duration = GetDouble(p + 64);
+    p += per_entry;
+  }
+  return entries;
+}
+
+std::uint64_t TransitionOracle::BuildKey(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid) {
+  return Fnv1a64(HeaderFields(model.name(), model.content_hash(), objective, grid));
 }
 
 void TransitionOracle::Finalize() {
@@ -425,25 +539,9 @@ std::string TransitionOracle::do_description() const {
 }
 
 std::string TransitionOracle::Serialize() const {
-  std::string payload;
-  payload.reserve(entries_.size() * kDoublesPerEntry * 8);
-  for (const Entry& e : entries_) {
-    PutDouble(payload, e.feasible ? 1.0 : 0.0);
-    PutDouble(payload, e.cost);
-    PutDouble(payload, e.parameters.t_ds);
-    PutDouble(payload, e.parameters.t_sw);
-    PutDouble(payload, e.parameters.com_height);
-    PutDouble(payload, e.com_work);
-    PutDouble(payload, e.heat);
-    PutDouble(payload, e.rcof);
-    PutDouble(payload, e.duration);
-  }
+  const std::string payload = EncodeEntries(entries_);
   std::string header = std::string(kMagic) + "\n";
-  header += "robot " + robot_name_ + "\n";
-  header += "model_hash " + HashHex(model_hash_) + "\n";
-  header += std::string("objective ") + to_string(objective_) + "\n";
-  header += AxisLine("dx", grid_.dx) + AxisLine("dy", grid_.dy) + AxisLine("dz", grid_.dz) +
-            AxisLine("dtheta", grid_.dtheta) + AxisLine("mu", grid_.mu);
+  header += HeaderFields(robot_name_, model_hash_, objective_, grid_);
   header += "entries " + cairn::FormatShort(entries_.size()) + "\n";
   header += "payload_bytes " + cairn::FormatShort(payload.size()) + "\n";
   header += "checksum " + HashHex(Fnv1a64(payload)) + "\n";
@@ -475,7 +573,9 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
     if (line.compare(0, key.size() + 1, key + " ") != 0) fail("corrupt header: expected '" + key + "'.");
     return line.substr(key.size() + 1);
   };
-  if (next_line() != kMagic) fail("not a transition oracle file (bad magic line).");
+  const std::string magic = next_line();
+  if (magic == kMagicVersion1) fail("written in format 1 (before oracle sources were recorded); build it again.");
+  if (magic != kMagic) fail("not a transition oracle file (bad magic line).");
   const std::string robot = field("robot");
   if (robot != model.name()) fail("made for robot '" + robot + "', not '" + model.name() + "'.");
   const std::string hash = field("model_hash");
@@ -486,6 +586,10 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
   const std::string stored_objective = field("objective");
   if (stored_objective != to_string(objective)) {
     fail("made for objective '" + stored_objective + "', not '" + to_string(objective) + "'.");
+  }
+  const std::string source = field("source");
+  if (source != TransitionOracle::kSource) {
+    fail("built from source '" + source + "', not '" + TransitionOracle::kSource + "'.");
   }
   OracleGrid stored;
   for (auto [name, axis] : {std::pair<const char*, std::vector<double>*>{"dx", &stored.dx},
@@ -517,25 +621,7 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
     fail("corrupt: payload checksum mismatch.");
   }
 
-  TransitionOracle oracle;
-  oracle.grid_ = grid;
-  oracle.objective_ = objective;
-  oracle.robot_name_ = robot;
-  oracle.model_hash_ = model.content_hash();
-  oracle.entries_.resize(entries);
-  const char* p = bytes.data() + position;
-  for (Entry& e : oracle.entries_) {
-    e.feasible = GetDouble(p) != 0.0;
-    e.cost = GetDouble(p + 8);
-    e.parameters = StepParameters{GetDouble(p + 16), GetDouble(p + 24), GetDouble(p + 32)};
-    e.com_work = GetDouble(p + 40);
-    e.heat = GetDouble(p + 48);
-    e.rcof = GetDouble(p + 56);
-    e.duration = GetDouble(p + 64);
-    p += kDoublesPerEntry * 8;
-  }
-  oracle.Finalize();
-  return oracle;
+  return FromEntries(model, objective, grid, DecodeEntries(std::string_view(bytes).substr(position), entries));
 }
 
 TransitionOracle TransitionOracle::LoadOrBuild(const std::string& path, const WalkingModel& model,

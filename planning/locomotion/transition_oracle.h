@@ -5,6 +5,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <cairn/planning/locomotion/step_cost_model.h>
@@ -30,6 +31,16 @@ struct OracleGrid {
   std::size_t num_displacements() const { return dx.size() * dy.size() * dz.size() * dtheta.size(); }
   /// Number of entries (displacements times mu values).
   std::size_t num_entries() const { return num_displacements() * mu.size(); }
+
+  /// Reads a grid from YAML: the five keys dx, dy, dz, dtheta (radians) and mu, each a list of values or a range
+  /// {from, to, step} (from, from + step, ... up to `to` within 1e-9; `to` need not be on the step). Throws
+  /// std::invalid_argument naming the file, line and key for a missing or unknown key, a value that is not a
+  /// finite number, a step that is not positive, or an axis of more than kMaxAxisValues values. The grid is
+  /// not checked against a robot's reach here: Validate does that.
+  static OracleGrid Load(const std::string& path);
+
+  /// Most values an axis read by Load may hold.
+  static constexpr std::size_t kMaxAxisValues = 10000;
 
   /// Throws std::invalid_argument naming the axis and the bad value if an axis is empty, not strictly
   /// increasing, non-finite, outside `reach` (mu: not positive), or dy is not positive.
@@ -69,9 +80,16 @@ struct OracleBuildOptions {
 /// reproduce (dx, dy) exactly and hypot is convex, so an interpolated cost over its hypot is at least the
 /// smallest corner ratio: the bound holds for every lookup.
 ///
-/// File format: a text header (magic "cairn-transition-oracle 1", robot name, model content hash, objective,
-/// the grid, payload size and its FNV-1a 64 checksum) followed by the binary payload (little-endian doubles,
-/// 9 per entry); written atomically.
+/// Sources: every entry comes from the analytic model (OptimizeTransition over the pattern generator), source
+/// "model". The source is part of the file header, so a table is never loaded for a source it was not built from.
+///
+/// File format: a text header (magic "cairn-transition-oracle 2", robot name, model content hash, objective,
+/// source, the grid, payload size and its FNV-1a 64 checksum) followed by the binary payload (little-endian
+/// doubles, 9 per entry); written atomically. Files of format 1 (no source line) are reported as stale.
+///
+/// Building in pieces: BuildCells computes the entries of a run of displacement cells, independently of every
+/// other cell, and FromEntries assembles a table from all of them, so a table built from pieces (by several
+/// processes: OracleShardBuilder) is the same, byte for byte, as one built by Build.
 class TransitionOracle final : public StepCostModel {
  public:
   /// One stored entry.
@@ -80,6 +98,32 @@ class TransitionOracle final : public StepCostModel {
   /// Builds the table (see class comment). Throws std::invalid_argument for a bad grid.
   static TransitionOracle Build(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
                                 const OracleBuildOptions& options = OracleBuildOptions());
+
+  /// The source name written into the header: "model".
+  static constexpr const char* kSource = "model";
+
+  /// The entries of displacement cells [first_cell, first_cell + num_cells) (cells in entries() order, each
+  /// with its grid.mu.size() entries, mu fastest), computed as Build computes them; progress counts these
+  /// cells' entries. Throws std::invalid_argument for a bad grid or a range outside [0, num_displacements()].
+  static std::vector<Entry> BuildCells(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
+                                       std::size_t first_cell, std::size_t num_cells,
+                                       const OracleBuildOptions& options = OracleBuildOptions());
+
+  /// The table of `entries` (all of the grid's, in entries() order). Throws std::invalid_argument for a bad grid
+  /// or a count other than grid.num_entries().
+  static TransitionOracle FromEntries(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
+                                      std::vector<Entry> entries);
+
+  /// Bytes of one stored entry (9 little-endian doubles).
+  static constexpr std::size_t kBytesPerEntry = 72;
+  /// Entries as the payload stores them (9 little-endian doubles each).
+  static std::string EncodeEntries(const std::vector<Entry>& entries);
+  /// The inverse of EncodeEntries; throws std::invalid_argument unless bytes holds exactly `count` entries.
+  static std::vector<Entry> DecodeEntries(std::string_view bytes, std::size_t count);
+
+  /// A 64-bit key of what a table's entries depend on: the robot's name and content hash, the objective, the
+  /// source and the grid (the header fields Load checks). Pieces of a build carry it.
+  static std::uint64_t BuildKey(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid);
 
   /// Reads a table written by Save and checks it against `model` (robot name and content hash), `objective` and
   /// `grid`. Throws std::runtime_error whose message names the file and says what differs or that it is

@@ -29,6 +29,7 @@
 #include "cairn/planning/footstep/refine_footstep_plan.h"
 #include "cairn/planning/footstep/terrain_map.h"
 #include "cairn/planning/locomotion/step_cost_model.h"
+#include "cairn/planning/locomotion/oracle_shard_builder.h"
 #include "cairn/planning/locomotion/transition_oracle.h"
 #include "cairn/planning/locomotion/walking_model.h"
 #include "cairn/planning/locomotion/walking_objective.h"
@@ -492,7 +493,9 @@ void DefinePlanning(py::module_ m) {
       .def_readwrite("dtheta", &OracleGrid::dtheta, "dtheta axis.")
       .def_readwrite("mu", &OracleGrid::mu, "Friction axis.")
       .def("num_entries", &OracleGrid::num_entries, "Entries.")
-      .def("Validate", &OracleGrid::Validate, py::arg("reach"), "ValueError naming a bad axis value.");
+      .def("Validate", &OracleGrid::Validate, py::arg("reach"), "ValueError naming a bad axis value.")
+      .def_static("Load", &OracleGrid::Load, py::arg("path"),
+                  "A grid from YAML (dx, dy, dz, dtheta, mu: lists or {from, to, step}).");
   py::class_<OracleBuildOptions>(m, "OracleBuildOptions", "How an oracle table is built.")
       .def(py::init<>(), "One thread per core.")
       .def_readwrite("num_threads", &OracleBuildOptions::num_threads, "Worker threads (0: one per core).");
@@ -537,7 +540,33 @@ void DefinePlanning(py::module_ m) {
       .def("robot_name", &TransitionOracle::robot_name, "The robot.")
       .def("num_entries", &TransitionOracle::num_entries, "Entries.")
       .def("num_feasible", &TransitionOracle::num_feasible, "Feasible entries.")
-      .def("build_seconds", &TransitionOracle::build_seconds, "Build wall time (0 if loaded).");
+      .def("build_seconds", &TransitionOracle::build_seconds, "Build wall time (0 if loaded).")
+      .def("Serialize", [](const TransitionOracle& o) { return py::bytes(o.Serialize()); },
+           "The bytes Save writes.");
+
+  py::class_<OracleShardBuilder::ShardReport>(m, "OracleShardReport", "What OracleShardBuilder.BuildShard did.")
+      .def_readonly("computed", &OracleShardBuilder::ShardReport::computed, "Chunks computed.")
+      .def_readonly("resumed", &OracleShardBuilder::ShardReport::resumed, "Chunks already on disk, skipped.")
+      .def_readonly("replaced", &OracleShardBuilder::ShardReport::replaced, "Of computed: stale or corrupt files.");
+  py::class_<OracleShardBuilder>(m, "OracleShardBuilder",
+                                 "A transition oracle built in checkpointed chunks shared by ranks; merges to the "
+                                 "bytes of one build.")
+      .def(py::init<const WalkingModel&, WalkingObjective, OracleGrid, std::string, int>(), py::arg("model"),
+           py::arg("objective"), py::arg("grid"), py::arg("checkpoint_folder"), py::arg("cells_per_chunk") = 16,
+           py::keep_alive<1, 2>(), "Keeps the model alive.")
+      .def("num_chunks", &OracleShardBuilder::num_chunks, "Chunks of the build.")
+      .def("ChunksOfRank", &OracleShardBuilder::ChunksOfRank, py::arg("rank"), py::arg("num_ranks"),
+           "The chunks a rank computes.")
+      .def("BuildShard",
+           [](const OracleShardBuilder& b, int rank, int num_ranks, const OracleBuildOptions& options) {
+             return b.BuildShard(rank, num_ranks, options);
+           },
+           py::arg("rank"), py::arg("num_ranks"), py::arg("options") = OracleBuildOptions(),
+           py::call_guard<py::gil_scoped_release>(), "Computes the rank's missing chunks (without the GIL).")
+      .def("MissingChunks", &OracleShardBuilder::MissingChunks, "Chunks without a valid checkpoint.")
+      .def("Merge", [](const OracleShardBuilder& b) { return std::make_shared<TransitionOracle>(b.Merge()); },
+           "The table from every chunk; RuntimeError naming the chunks not ready.")
+      .def("RemoveCheckpoints", &OracleShardBuilder::RemoveCheckpoints, "Removes this build's chunk files.");
 
   m.def("PlanFootsteps", &PlanFootsteps, py::arg("terrain"), py::arg("start"), py::arg("goal"), py::arg("cost_model"),
         py::arg("geometry"), py::arg("options"), py::call_guard<py::gil_scoped_release>(),

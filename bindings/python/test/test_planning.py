@@ -148,3 +148,25 @@ def test_values_and_errors(walking_model, oracle):
     with pytest.raises(ValueError, match="both feet stand at one point"):
         planning.PlanFootsteps(terrain, planning.Stance(), planning.StanceGoal(stance, 0.2), oracle,
                                planning.BipedGeometry(), planning.FootstepPlannerOptions())
+
+
+def test_oracle_built_in_shards_matches_one_build(walking_model, tmp_path):
+    grid_file = tmp_path / "grid.yaml"
+    grid_file.write_text("dx: [0.15, 0.25]\ndy: [0.18, 0.24]\ndz: [0.0]\ndtheta: [0.0]\nmu: {from: 0.5, to: 1.0, step: 0.5}\n")
+    grid = planning.OracleGrid.Load(str(grid_file))
+    assert grid.mu == [0.5, 1.0]
+    options = planning.OracleBuildOptions()
+    options.num_threads = 1
+    objective = planning.WalkingObjective.kComWorkPlusHeat
+    whole = planning.TransitionOracle.Build(walking_model, objective, grid, options)
+    builder = planning.OracleShardBuilder(walking_model, objective, grid, str(tmp_path / "parts"), 1)
+    assert builder.num_chunks() == 4 and builder.ChunksOfRank(1, 2) == [1, 3]
+    assert builder.BuildShard(1, 2, options).computed == 2
+    assert builder.MissingChunks() == [0, 2]
+    with pytest.raises(RuntimeError, match="2 of 4 chunks are not ready"):
+        builder.Merge()
+    report = builder.BuildShard(0, 1, options)
+    assert (report.computed, report.resumed) == (2, 2)
+    assert builder.Merge().Serialize() == whole.Serialize()
+    builder.RemoveCheckpoints()
+    assert not (tmp_path / "parts").exists()

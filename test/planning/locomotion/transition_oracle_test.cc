@@ -278,6 +278,67 @@ TEST_F(TransitionOracleTest, AnUnusableCacheWarnsOnceAndKeepsTheTableInMemory) {
   std::filesystem::remove_all(root);
 }
 
+TEST_F(TransitionOracleTest, FilesRecordTheSourceAndOlderFormatsAreStale) {
+  const std::string bytes = oracle_->Serialize();
+  EXPECT_NE(bytes.find("\nsource model\n"), std::string::npos);
+  const std::string path = TempPath("source.bin");
+  std::string other = bytes;
+  other.replace(other.find("source model"), 12, "source plant");
+  std::ofstream(path, std::ios::binary) << other;
+  CAIRN_EXPECT_THROWS_WITH(TransitionOracle::Load(path, *model_, WalkingObjective::kComWorkPlusHeat, Grid()),
+                           std::runtime_error, "built from source 'plant', not 'model'");
+  std::string old = bytes;
+  old.replace(0, old.find('\n'), "cairn-transition-oracle 1");
+  std::ofstream(path, std::ios::binary) << old;
+  CAIRN_EXPECT_THROWS_WITH(TransitionOracle::Load(path, *model_, WalkingObjective::kComWorkPlusHeat, Grid()),
+                           std::runtime_error, "format 1", "build it again");
+  std::filesystem::remove(path);
+}
+
+// Cells built in pieces and assembled are the table Build makes.
+TEST_F(TransitionOracleTest, CellsBuiltInPiecesAssembleToTheSameTable) {
+  const OracleGrid grid = Grid();
+  OracleBuildOptions options;
+  options.num_threads = 1;
+  std::vector<TransitionOracle::Entry> entries;
+  for (std::size_t first = 0; first < grid.num_displacements(); first += 5) {
+    const std::size_t count = std::min<std::size_t>(5, grid.num_displacements() - first);
+    const auto piece = TransitionOracle::BuildCells(*model_, WalkingObjective::kComWorkPlusHeat, grid, first, count, options);
+    ASSERT_EQ(piece.size(), count * grid.mu.size());
+    entries.insert(entries.end(), piece.begin(), piece.end());
+  }
+  const std::string encoded = TransitionOracle::EncodeEntries(entries);
+  EXPECT_EQ(encoded.size(), entries.size() * TransitionOracle::kBytesPerEntry);
+  const TransitionOracle assembled = TransitionOracle::FromEntries(
+      *model_, WalkingObjective::kComWorkPlusHeat, grid, TransitionOracle::DecodeEntries(encoded, entries.size()));
+  EXPECT_EQ(assembled.Serialize(), oracle_->Serialize());
+  CAIRN_EXPECT_THROWS_WITH(
+      TransitionOracle::BuildCells(*model_, WalkingObjective::kComWorkPlusHeat, grid, 15, 2, options),
+      std::invalid_argument, "cells [15, 17) lie outside the grid's 16 displacement cells");
+  CAIRN_EXPECT_THROWS_WITH(TransitionOracle::FromEntries(*model_, WalkingObjective::kComWorkPlusHeat, grid, {}),
+                           std::invalid_argument, "0 entries for a grid of 48");
+  CAIRN_EXPECT_THROWS_WITH(TransitionOracle::DecodeEntries(encoded.substr(1), entries.size()), std::invalid_argument,
+                           "do not hold 48 entries");
+}
+
+TEST_F(TransitionOracleTest, LoadsGridsFromYaml) {
+  const std::string path = TempPath("grid.yaml");
+  std::ofstream(path) << "dx: {from: 0.15, to: 0.26, step: 0.05}\ndy: [0.18, 0.24]\ndz: [0.0]\n"
+                         "dtheta: [0.0]\nmu: [0.1, 1.0]\n";
+  const OracleGrid grid = OracleGrid::Load(path);
+  ASSERT_EQ(grid.dx.size(), 3u);
+  EXPECT_DOUBLE_EQ(grid.dx[2], 0.25);
+  EXPECT_EQ(grid.dy, (std::vector<double>{0.18, 0.24}));
+  EXPECT_NO_THROW(grid.Validate(model_->reach()));
+  std::ofstream(path) << "dx: {from: 0.15, to: 0.25, step: 0}\ndy: [0.18]\ndz: [0.0]\ndtheta: [0.0]\nmu: [1.0]\n";
+  CAIRN_EXPECT_THROWS_WITH(OracleGrid::Load(path), std::invalid_argument, path, "line 1", "dx.step is 0");
+  std::ofstream(path) << "dx: {from: 0, to: 1000, step: 0.001}\ndy: [0.18]\ndz: [0.0]\ndtheta: [0.0]\nmu: [1.0]\n";
+  CAIRN_EXPECT_THROWS_WITH(OracleGrid::Load(path), std::invalid_argument, "1e+06 values, more than the limit of 10000");
+  std::ofstream(path) << "dx: [0.2]\ndy: [0.18]\ndz: [0.0]\ndtheta: [0.0]\nmus: [1.0]\n";
+  CAIRN_EXPECT_THROWS_WITH(OracleGrid::Load(path), std::invalid_argument, "mus");
+  std::filesystem::remove(path);
+}
+
 TEST_F(TransitionOracleTest, ValidatesGrids) {
   OracleGrid grid = Grid();
   grid.dx = {0.25, 0.15};
