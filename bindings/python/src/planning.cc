@@ -600,15 +600,15 @@ void DefinePlanning(py::module_ m) {
   py::class_<FootstepPlanner, systems::LeafSystem>(
       m, "FootstepPlanner",
       "System: inputs `terrain` (TerrainMap), `start` (Stance), `goal` (StanceGoal); output `plan` (FootstepPlan), "
-      "computed when evaluated and cached until an input changes.")
+      "searched at initialization, on forced events and every `period` s when positive, and kept as state.")
       .def(py::init([](std::shared_ptr<StepCostModel> cost_model, const BipedGeometry& geometry,
                        const FootstepPlannerOptions& options, std::shared_ptr<WalkingModel> refine_model,
-                       WalkingObjective objective) {
+                       WalkingObjective objective, double period) {
              return std::make_unique<FootstepPlanner>(std::move(cost_model), geometry, options, std::move(refine_model),
-                                                      objective);
+                                                      objective, period);
            }),
            py::arg("cost_model"), py::arg("geometry"), py::arg("options"), py::arg("refine_model") = nullptr,
-           py::arg("objective") = WalkingObjective::kComWorkPlusHeat,
+           py::arg("objective") = WalkingObjective::kComWorkPlusHeat, py::arg("period") = 0.0,
            "With `refine_model`, plans are refined for `objective` (the cost model's).")
       .def("get_terrain_input_port", PortGetter(&FootstepPlanner::get_terrain_input_port), "Input `terrain`.")
       .def("get_start_input_port", PortGetter(&FootstepPlanner::get_start_input_port), "Input `start`.")
