@@ -17,6 +17,10 @@ struct FootstepPlannerOptions {
   /// Largest distance of the ground under the sole from the foothold's plane, m: larger gaps or bumps (a stair
   /// edge under the heel) leave the foot unsupported.
   double support_tolerance{0.02};
+  /// Smallest probability eta_geom that a stance's body box is free of the terrain's occupied voxels
+  /// (TerrainMap::BoxFreeProbability; stereo uncertainty as a chance constraint on collision). In (0, 1]; 1 allows
+  /// no voxel evidence at all in the box. Box obstacles are certain and always block.
+  double min_body_free_probability{0.9};
   /// ARA*: initial ε, its decrement and the wall-clock budget.
   AraStarOptions search;
 };

@@ -45,6 +45,13 @@ bool FootstepReplanner::UpdateTerrain(const TerrainMap& terrain) {
   // Cost-raising only: old obstacles kept (new ones may follow), and every cell keeps its ground (same height
   // and normal) with no more friction, or loses its ground or walkability.
   bool raises_only = terrain.obstacles().size() >= terrain_.obstacles().size();
+  // Voxels shape the heuristic too (those that alone block a body): any change to them rebuilds it.
+  raises_only = raises_only && terrain.voxel_size() == terrain_.voxel_size() &&
+                terrain.occupied_voxels().size() == terrain_.occupied_voxels().size();
+  for (std::size_t k = 0; raises_only && k < terrain.occupied_voxels().size(); ++k) {
+    raises_only = terrain.occupied_voxels()[k].center == terrain_.occupied_voxels()[k].center &&
+                  terrain.occupied_voxels()[k].probability == terrain_.occupied_voxels()[k].probability;
+  }
   for (std::size_t k = 0; raises_only && k < terrain_.obstacles().size(); ++k) {
     raises_only = SameObstacle(terrain.obstacles()[k], terrain_.obstacles()[k]);
   }

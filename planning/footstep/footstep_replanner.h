@@ -36,8 +36,8 @@ class FootstepReplanner {
   /// can only raise step costs -- cells lost friction, ground or walkability, and obstacles were only added -- the
   /// precomputed heuristic stays admissible and is kept (the footholds around the changed cells are evaluated
   /// again), so the next Plan() costs only its search, which is still optimal, though it expands more where the
-  /// terrain changed; returns true. Any other change discards the precomputation (false): the next Plan()
-  /// computes it again.
+  /// terrain changed; returns true. Any other change, including any change to the occupied voxels, discards the
+  /// precomputation (false): the next Plan() computes it again.
   bool UpdateTerrain(const TerrainMap& terrain);
 
   /// Whether the heuristic's precomputation is done (after the first Plan() that had time for it).

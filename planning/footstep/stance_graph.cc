@@ -61,6 +61,9 @@ StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_mo
   if (!(options.support_tolerance >= 0.0)) {
     fail("support_tolerance must be >= 0 m, got " + cairn::FormatShort(options.support_tolerance));
   }
+  if (!(options.min_body_free_probability > 0.0 && options.min_body_free_probability <= 1.0)) {
+    fail("min_body_free_probability must be in (0, 1], got " + cairn::FormatShort(options.min_body_free_probability));
+  }
   if (!(geometry.foot_length > 0.0 && geometry.foot_width > 0.0)) {
     fail("the sole must have a positive length and width");
   }
@@ -261,6 +264,13 @@ bool StanceGraph::IsGoal(Key key) const {
   return near(left, goal_.stance.left) && near(right, goal_.stance.right);
 }
 
+bool StanceGraph::BodyBlocked(const Eigen::Vector3d& center, double yaw) const {
+  if (terrain_.BoxHitsObstacle(center, geometry_.body_half_extents, yaw)) return true;
+  return !terrain_.occupied_voxels().empty() &&
+         terrain_.BoxFreeProbability(center, geometry_.body_half_extents, yaw, options_.min_body_free_probability) <
+             options_.min_body_free_probability;
+}
+
 bool StanceGraph::EvaluateStep(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side,
                                const LatticeFoot& target, PlannedStep* step, bool count_rejections) {
   const FootSide moving = OtherSide(newer_side);
@@ -302,11 +312,10 @@ bool StanceGraph::EvaluateStep(const LatticeFoot& older, const LatticeFoot& newe
     if (count_rejections) ++rejections_.rejected_collision;
     return false;
   }
-  if (!terrain_.obstacles().empty()) {
+  if (HasBodyChecks()) {
     const Eigen::Vector2d mid = 0.5 * (pn + pt);
     const double body_z = std::max(ft.z, fn.z) + geometry_.body_bottom + geometry_.body_half_extents.z();
-    if (terrain_.BoxHitsObstacle(Eigen::Vector3d(mid.x(), mid.y(), body_z), geometry_.body_half_extents,
-                                 Yaw(newer.itheta) + 0.5 * bins * yaw_step)) {
+    if (BodyBlocked(Eigen::Vector3d(mid.x(), mid.y(), body_z), Yaw(newer.itheta) + 0.5 * bins * yaw_step)) {
       if (count_rejections) ++rejections_.rejected_collision;
       return false;
     }
@@ -407,7 +416,8 @@ void StanceGraph::ComputeChainDistances() {
       const double gy = std::max(0.0, std::abs(-s * d.x() + c * d.y()) - o.half_extents.y());
       if (gx * gx + gy * gy < body_radius * body_radius) return true;
     }
-    return false;
+    // A voxel that alone makes the body's free probability too small blocks as surely as a box.
+    return terrain_.DiscMeetsVoxel(m, body_radius, bottom, bottom + body_height, options_.min_body_free_probability);
   };
   // Where the exact foothold-chain bound exists, the stride bound (a valid but looser bound on the same strides)
   // is not worth its Dijkstra with links of two steps' length; 0 is a valid bound in its place.
@@ -416,7 +426,7 @@ void StanceGraph::ComputeChainDistances() {
   } else {
     for (std::vector<double>& distance : stride_distance_) distance.assign(usable.size(), 0.0);
   }
-  const bool has_obstacles = !terrain_.obstacles().empty();
+  const bool has_obstacles = HasBodyChecks();
   // A real step between footholds at p and q uses at most the friction both offer, and its cost is at least the
   // model's bound there (friction values are few: one per region, so the bounds are memoised).
   std::unordered_map<float, StepCostLowerBound> bounds;
@@ -514,13 +524,13 @@ double StanceGraph::RelaxedStepCost(const LatticeFoot& from, int moving, int cla
   const StepReach& reach = cost_model_.reach();
   const double dz = ft.z - fn.z;
   if (dz < reach.dz_min - kTolerance || dz > reach.dz_max + kTolerance) return kInf;
-  if (!terrain_.obstacles().empty()) {
+  if (HasBodyChecks()) {
     // As the search checks it, from the same absolute positions.
     const Eigen::Vector2d pn = Position(from), pt = Position(target);
     const Eigen::Vector2d mid = 0.5 * (pn + pt);
     const double body_z = std::max(ft.z, fn.z) + geometry_.body_bottom + geometry_.body_half_extents.z();
-    if (terrain_.BoxHitsObstacle(Eigen::Vector3d(mid.x(), mid.y(), body_z), geometry_.body_half_extents,
-                                 Yaw(from.itheta) + 0.5 * BinDelta(from.itheta, target.itheta) * (2.0 * M_PI / d))) {
+    if (BodyBlocked(Eigen::Vector3d(mid.x(), mid.y(), body_z),
+                    Yaw(from.itheta) + 0.5 * BinDelta(from.itheta, target.itheta) * (2.0 * M_PI / d))) {
       return kInf;
     }
   }

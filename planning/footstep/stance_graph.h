@@ -160,6 +160,11 @@ class StanceGraph {
   }
   void GenerateSuccessors(Key key, std::vector<std::pair<Key, double>>* out);
   // Prices the move of the older foot to `target`; false when the edge does not exist.
+  // The body box at `center` with `yaw` hits a box obstacle, or is free of the occupied voxels with less than
+  // options_.min_body_free_probability.
+  bool BodyBlocked(const Eigen::Vector3d& center, double yaw) const;
+  // Box obstacles or occupied voxels exist (else the body needs no check).
+  bool HasBodyChecks() const { return !terrain_.obstacles().empty() || !terrain_.occupied_voxels().empty(); }
   bool EvaluateStep(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side, const LatticeFoot& target,
                     PlannedStep* step, bool count_rejections);
   Eigen::Vector2d Position(const LatticeFoot& foot) const;

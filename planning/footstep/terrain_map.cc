@@ -1,10 +1,12 @@
 #include <cairn/planning/footstep/terrain_map.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include <cairn/planning/footstep/internal/yaw_box.h>
 
@@ -126,6 +128,130 @@ Eigen::Vector3d TerrainMap::normal(int col, int row) const {
 bool TerrainMap::BoxHitsObstacle(const Eigen::Vector3d& center, const Eigen::Vector3d& half_extents, double yaw) const {
   for (const Obstacle& o : obstacles_) {
     if (internal::YawBoxesOverlap(center, half_extents, yaw, o.center, o.half_extents, o.yaw)) return true;
+  }
+  return false;
+}
+
+void TerrainMap::SetOccupiedVoxels(std::vector<OccupiedVoxel> voxels, double size) {
+  if (!(size > 0.0) || !std::isfinite(size)) {
+    std::ostringstream message;
+    message << "TerrainMap::SetOccupiedVoxels: voxel size " << size << " m must be positive and finite";
+    throw std::invalid_argument(message.str());
+  }
+  if (voxels.size() > kMaxVoxels) {
+    std::ostringstream message;
+    message << "TerrainMap::SetOccupiedVoxels: " << voxels.size() << " voxels are more than the " << kMaxVoxels
+            << " a map may hold; raise the occupancy threshold or coarsen the grid";
+    throw std::invalid_argument(message.str());
+  }
+  for (std::size_t i = 0; i < voxels.size(); ++i) {
+    const OccupiedVoxel& v = voxels[i];
+    if (!v.center.allFinite() || !(v.probability > 0.0 && v.probability < 1.0)) {
+      std::ostringstream message;
+      message << "TerrainMap::SetOccupiedVoxels: voxel " << i << " at (" << v.center.transpose() << ") has probability "
+              << v.probability << "; give a finite centre and a probability in (0, 1)";
+      throw std::invalid_argument(message.str());
+    }
+  }
+  voxels_ = std::move(voxels);
+  voxel_size_ = voxels_.empty() ? 0.0 : size;
+  // Buckets of at least 20 cm (a body box then spans a few of them) and at least a voxel.
+  bucket_size_ = std::max({0.2, size, resolution_});
+  bucket_cols_ = static_cast<int>(std::ceil(cols_ * resolution_ / bucket_size_));
+  bucket_rows_ = static_cast<int>(std::ceil(rows_ * resolution_ / bucket_size_));
+  const std::size_t buckets = static_cast<std::size_t>(bucket_cols_) * static_cast<std::size_t>(bucket_rows_);
+  std::vector<int> bucket_of(voxels_.size(), -1);
+  std::vector<int> count(buckets + 1, 0);
+  voxel_outside_.clear();
+  voxel_log_free_.resize(voxels_.size());
+  for (std::size_t i = 0; i < voxels_.size(); ++i) {
+    voxel_log_free_[i] = std::log1p(-voxels_[i].probability);
+    const double bx = (voxels_[i].center.x() - origin_.x()) / bucket_size_;
+    const double by = (voxels_[i].center.y() - origin_.y()) / bucket_size_;
+    if (bx >= 0.0 && by >= 0.0 && bx < bucket_cols_ && by < bucket_rows_) {
+      bucket_of[i] = static_cast<int>(by) * bucket_cols_ + static_cast<int>(bx);
+      ++count[static_cast<std::size_t>(bucket_of[i]) + 1];
+    } else {
+      voxel_outside_.push_back(static_cast<int>(i));
+    }
+  }
+  bucket_start_.assign(buckets + 1, 0);
+  for (std::size_t b = 0; b < buckets; ++b) bucket_start_[b + 1] = bucket_start_[b] + count[b + 1];
+  voxel_order_.assign(static_cast<std::size_t>(bucket_start_[buckets]), 0);
+  std::vector<int> fill(bucket_start_.begin(), bucket_start_.end() - 1);
+  for (std::size_t i = 0; i < voxels_.size(); ++i) {
+    if (bucket_of[i] >= 0) voxel_order_[static_cast<std::size_t>(fill[static_cast<std::size_t>(bucket_of[i])]++)] = static_cast<int>(i);
+  }
+}
+
+double TerrainMap::BoxFreeProbability(const Eigen::Vector3d& center, const Eigen::Vector3d& half_extents, double yaw,
+                                      double stop_below) const {
+  if (voxels_.empty()) return 1.0;
+  // A voxel that only touches the box's surface does not count: shrink it by a hair.
+  const double h = 0.5 * voxel_size_ * (1.0 - 1e-9);
+  const double cos_yaw = std::cos(yaw), sin_yaw = std::sin(yaw);
+  const double c = std::abs(cos_yaw), s = std::abs(sin_yaw);
+  // Half widths of the box along the world axes, and of the voxel (an axis-aligned cube) along the box's axes.
+  const double rx = c * half_extents.x() + s * half_extents.y();
+  const double ry = s * half_extents.x() + c * half_extents.y();
+  const double voxel_along_box = h * (c + s);
+  const double log_stop = stop_below > 0.0 ? std::log(stop_below) : -std::numeric_limits<double>::infinity();
+  double log_free = 0.0;
+  // Separating axes of a yawed box and an axis-aligned cube: z, the world's x and y, and the box's two axes.
+  auto visit = [&](int i) {
+    const Eigen::Vector3d d = voxels_[static_cast<std::size_t>(i)].center - center;
+    if (std::abs(d.z()) > half_extents.z() + h || std::abs(d.x()) > rx + h || std::abs(d.y()) > ry + h) return false;
+    if (std::abs(cos_yaw * d.x() + sin_yaw * d.y()) > half_extents.x() + voxel_along_box) return false;
+    if (std::abs(-sin_yaw * d.x() + cos_yaw * d.y()) > half_extents.y() + voxel_along_box) return false;
+    log_free += voxel_log_free_[static_cast<std::size_t>(i)];
+    return log_free < log_stop;
+  };
+  const int b0x = std::max(0, static_cast<int>(std::floor((center.x() - rx - h - origin_.x()) / bucket_size_)));
+  const int b1x = std::min(bucket_cols_ - 1, static_cast<int>(std::floor((center.x() + rx + h - origin_.x()) / bucket_size_)));
+  const int b0y = std::max(0, static_cast<int>(std::floor((center.y() - ry - h - origin_.y()) / bucket_size_)));
+  const int b1y = std::min(bucket_rows_ - 1, static_cast<int>(std::floor((center.y() + ry + h - origin_.y()) / bucket_size_)));
+  for (int by = b0y; by <= b1y; ++by) {
+    for (int bx = b0x; bx <= b1x; ++bx) {
+      const std::size_t b = static_cast<std::size_t>(by) * static_cast<std::size_t>(bucket_cols_) + static_cast<std::size_t>(bx);
+      for (int k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k) {
+        if (visit(voxel_order_[static_cast<std::size_t>(k)])) return std::exp(log_free);
+      }
+    }
+  }
+  for (const int i : voxel_outside_) {
+    if (visit(i)) return std::exp(log_free);
+  }
+  return std::exp(log_free);
+}
+
+bool TerrainMap::DiscMeetsVoxel(const Eigen::Vector2d& center, double radius, double z_lo, double z_hi,
+                                double free_below) const {
+  if (voxels_.empty()) return false;
+  const double h = 0.5 * voxel_size_;
+  const double log_below = std::log(free_below);
+  auto meets = [&](int i) {
+    if (!(voxel_log_free_[static_cast<std::size_t>(i)] < log_below)) return false;
+    const Eigen::Vector3d& v = voxels_[static_cast<std::size_t>(i)].center;
+    if (v.z() + h <= z_lo || v.z() - h >= z_hi) return false;
+    const double gx = std::max(0.0, std::abs(v.x() - center.x()) - h);
+    const double gy = std::max(0.0, std::abs(v.y() - center.y()) - h);
+    return gx * gx + gy * gy < radius * radius;
+  };
+  const double reach = radius + h;
+  const int b0x = std::max(0, static_cast<int>(std::floor((center.x() - reach - origin_.x()) / bucket_size_)));
+  const int b1x = std::min(bucket_cols_ - 1, static_cast<int>(std::floor((center.x() + reach - origin_.x()) / bucket_size_)));
+  const int b0y = std::max(0, static_cast<int>(std::floor((center.y() - reach - origin_.y()) / bucket_size_)));
+  const int b1y = std::min(bucket_rows_ - 1, static_cast<int>(std::floor((center.y() + reach - origin_.y()) / bucket_size_)));
+  for (int by = b0y; by <= b1y; ++by) {
+    for (int bx = b0x; bx <= b1x; ++bx) {
+      const std::size_t b = static_cast<std::size_t>(by) * static_cast<std::size_t>(bucket_cols_) + static_cast<std::size_t>(bx);
+      for (int k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k) {
+        if (meets(voxel_order_[static_cast<std::size_t>(k)])) return true;
+      }
+    }
+  }
+  for (const int i : voxel_outside_) {
+    if (meets(i)) return true;
   }
   return false;
 }

@@ -17,6 +17,11 @@ namespace cairn::planning {
 ///
 /// Cells are addressed by (col, row); cell (c, r) covers x in [origin.x + c*res, origin.x + (c+1)*res) and
 /// likewise y with r. Point queries use the cell containing the point.
+///
+/// Besides certain box obstacles, the map may hold perception's uncertain evidence of occupied space: cubic
+/// voxels each occupied with a probability, independently of the others (an occupancy grid's own assumption). The
+/// probability that a body box is free is then the product of (1 - p) over the voxels it overlaps, and a planner
+/// allows a stance only when that stays above its level eta_geom (FootstepPlannerOptions::min_body_free_probability).
 class TerrainMap {
  public:
   /// An axis-aligned box in the horizontal plane rotated by `yaw` about its centre's vertical axis.
@@ -27,8 +32,16 @@ class TerrainMap {
     double yaw{0.0};
   };
 
+  /// A cube of occupied space with its occupancy probability (from an occupancy grid's cell).
+  struct OccupiedVoxel {
+    Eigen::Vector3d center{Eigen::Vector3d::Zero()};
+    double probability{0.5};
+  };
+
   /// Most cells a map may hold: 2^27 (3 GiB).
   static constexpr std::int64_t kMaxCells = std::int64_t{1} << 27;
+  /// Most occupied voxels a map may hold: 2^24.
+  static constexpr std::size_t kMaxVoxels = std::size_t{1} << 24;
 
   /// A grid of `cols` x `rows` cells of side `resolution` (m) whose minimum corner is `origin` (m), every cell
   /// without ground. Throws std::invalid_argument for a non-positive size or resolution, a non-finite origin, or
@@ -67,6 +80,26 @@ class TerrainMap {
   /// Whether the box `half_extents` centred at `center` and rotated by `yaw` overlaps an obstacle.
   bool BoxHitsObstacle(const Eigen::Vector3d& center, const Eigen::Vector3d& half_extents, double yaw) const;
 
+  /// Replaces the occupied voxels by `voxels`, cubes of side `size` (m). Unlike AddObstacle, voxels leave the
+  /// ground below them as it is (a foot's support is the ground cells' business; voxels only block bodies). Throws
+  /// std::invalid_argument for a non-positive or non-finite size, a voxel whose probability is outside (0, 1) or
+  /// whose centre is not finite (naming its index), or more than kMaxVoxels voxels.
+  void SetOccupiedVoxels(std::vector<OccupiedVoxel> voxels, double size);
+  /// The occupied voxels, in the order given.
+  const std::vector<OccupiedVoxel>& occupied_voxels() const { return voxels_; }
+  /// Side of the occupied voxels, m (0 when there are none).
+  double voxel_size() const { return voxel_size_; }
+  /// The probability that the box `half_extents` centred at `center`, rotated by `yaw`, overlaps no occupied
+  /// voxel: the product of (1 - p) over the voxels whose cube overlaps the box's interior (1 without voxels).
+  /// With `stop_below` > 0 the product stops once it falls below that value (the result is then below it too,
+  /// not the full product): a planner asking "at least eta?" needs no more.
+  double BoxFreeProbability(const Eigen::Vector3d& center, const Eigen::Vector3d& half_extents, double yaw,
+                            double stop_below = 0.0) const;
+  /// Whether a voxel that alone leaves a box free with probability below `free_below` (1 - p < free_below) has a
+  /// footprint within `radius` of `center` and overlaps the heights (z_lo, z_hi): for a planner's admissible
+  /// bounds, such a voxel is as certain an obstacle as a box.
+  bool DiscMeetsVoxel(const Eigen::Vector2d& center, double radius, double z_lo, double z_hi, double free_below) const;
+
  private:
   std::size_t Index(int col, int row) const { return static_cast<std::size_t>(row) * cols_ + col; }
   void CheckCell(int col, int row, const char* caller) const;
@@ -79,6 +112,18 @@ class TerrainMap {
   std::vector<float> normal_;  // 3 per cell
   std::vector<float> friction_;
   std::vector<Obstacle> obstacles_;
+  // Occupied voxels, and their log(1 - p) bucketed on a coarse grid of `bucket_size_` squares from origin_
+  // (CSR: the voxels of bucket b are voxel_order_[bucket_start_[b] .. bucket_start_[b + 1])); voxels outside the
+  // bucket grid are listed in voxel_outside_ and checked by every query.
+  std::vector<OccupiedVoxel> voxels_;
+  double voxel_size_{0.0};
+  double bucket_size_{0.0};
+  int bucket_cols_{0};
+  int bucket_rows_{0};
+  std::vector<int> bucket_start_;
+  std::vector<int> voxel_order_;
+  std::vector<int> voxel_outside_;
+  std::vector<double> voxel_log_free_;
 };
 
 }  // namespace cairn::planning

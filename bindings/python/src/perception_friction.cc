@@ -306,6 +306,20 @@ void DefinePerceptionFriction(py::module_ m) {
   py::class_<FrictionPointCloud>(m, "FrictionPointCloud",
                                  "World points with their friction quantile and material weights.")
       .def(py::init<>(), "Empty.")
+      .def(py::init([](const Eigen::MatrixX3d& points, const Eigen::VectorXf& quantiles, const Eigen::MatrixXf& weights) {
+             if (quantiles.size() != points.rows() || weights.rows() != points.rows()) {
+               throw std::invalid_argument("FrictionPointCloud: " + cairn::FormatShort(points.rows()) + " points, " +
+                                           cairn::FormatShort(quantiles.size()) + " quantiles and " +
+                                           cairn::FormatShort(weights.rows()) + " weight rows; give one of each per point");
+             }
+             FrictionPointCloud cloud;
+             for (Eigen::Index i = 0; i < points.rows(); ++i) cloud.points_W.emplace_back(points.row(i).transpose());
+             cloud.quantiles.assign(quantiles.data(), quantiles.data() + quantiles.size());
+             cloud.weights = weights;
+             return cloud;
+           }),
+           py::arg("points_W"), py::arg("quantiles"), py::arg("weights"),
+           "From (n, 3) world points, n quantiles and (n, labels) registry-order weights.")
       .def_property_readonly("points_W", [](const FrictionPointCloud& c) { return StackRows(c.points_W); },
                              "(n, 3) points (a copy).")
       .def_property_readonly(

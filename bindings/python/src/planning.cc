@@ -350,6 +350,8 @@ void DefinePlanning(py::module_ m) {
       .def_readwrite("orientations", &FootstepPlannerOptions::orientations, "Footstep directions (<= 32).")
       .def_readwrite("max_slope", &FootstepPlannerOptions::max_slope, "rad.")
       .def_readwrite("support_tolerance", &FootstepPlannerOptions::support_tolerance, "m.")
+      .def_readwrite("min_body_free_probability", &FootstepPlannerOptions::min_body_free_probability,
+                     "eta_geom: least probability that a stance's body box is free of occupied voxels.")
       .def_readwrite("search", &FootstepPlannerOptions::search, "AraStarOptions.");
   py::class_<BipedGeometry>(m, "BipedGeometry", "Sole rectangles and the body box the planner checks.")
       .def(py::init<>(), "Defaults (24 x 14 cm soles).")
@@ -437,7 +439,37 @@ void DefinePlanning(py::module_ m) {
           [](const TerrainMap& t) { return CellArray(t, [&t](int c, int r) { return t.friction(c, r); }); },
           "Every cell's friction as a (rows, cols) array (a copy).")
       .def("BoxHitsObstacle", &TerrainMap::BoxHitsObstacle, py::arg("center"), py::arg("half_extents"), py::arg("yaw"),
-           "Whether a yawed box overlaps an obstacle.");
+           "Whether a yawed box overlaps an obstacle.")
+      .def(
+          "SetOccupiedVoxels",
+          [](TerrainMap& t, const Eigen::MatrixX3d& centers, const Eigen::VectorXd& probabilities, double size) {
+            if (centers.rows() != probabilities.size()) {
+              throw std::invalid_argument("SetOccupiedVoxels: " + cairn::FormatShort(centers.rows()) + " centres but " +
+                                          cairn::FormatShort(probabilities.size()) + " probabilities; give one per voxel");
+            }
+            std::vector<TerrainMap::OccupiedVoxel> voxels(static_cast<std::size_t>(centers.rows()));
+            for (Eigen::Index i = 0; i < centers.rows(); ++i) {
+              voxels[static_cast<std::size_t>(i)] = {centers.row(i).transpose(), probabilities(i)};
+            }
+            t.SetOccupiedVoxels(std::move(voxels), size);
+          },
+          py::arg("centers"), py::arg("probabilities"), py::arg("size"),
+          "Occupied voxels: (n, 3) centres, n probabilities in (0, 1), cube side in m.")
+      .def(
+          "occupied_voxels",
+          [](const TerrainMap& t) {
+            Eigen::MatrixX3d centers(static_cast<Eigen::Index>(t.occupied_voxels().size()), 3);
+            Eigen::VectorXd probabilities(static_cast<Eigen::Index>(t.occupied_voxels().size()));
+            for (std::size_t i = 0; i < t.occupied_voxels().size(); ++i) {
+              centers.row(static_cast<Eigen::Index>(i)) = t.occupied_voxels()[i].center.transpose();
+              probabilities(static_cast<Eigen::Index>(i)) = t.occupied_voxels()[i].probability;
+            }
+            return py::make_tuple(centers, probabilities);
+          },
+          "(centres (n, 3), probabilities (n,)), copies.")
+      .def("voxel_size", &TerrainMap::voxel_size, "Side of the voxels, m (0 without).")
+      .def("BoxFreeProbability", &TerrainMap::BoxFreeProbability, py::arg("center"), py::arg("half_extents"),
+           py::arg("yaw"), py::arg("stop_below") = 0.0, "Probability that a yawed box overlaps no occupied voxel.");
 
   py::enum_<WalkingObjective>(m, "WalkingObjective", "What a step's cost measures.")
       .value("kComWork", WalkingObjective::kComWork, "\"ecom\": COM work.")
@@ -597,15 +629,15 @@ void DefinePlanning(py::module_ m) {
   py::class_<FootstepPlanner, systems::LeafSystem>(
       m, "FootstepPlanner",
       "System: inputs `terrain` (TerrainMap), `start` (Stance), `goal` (StanceGoal); output `plan` (FootstepPlan), "
-      "computed when evaluated and cached until an input changes.")
+      "searched at initialization, on forced events and every `period` s when positive, and kept as state.")
       .def(py::init([](std::shared_ptr<StepCostModel> cost_model, const BipedGeometry& geometry,
                        const FootstepPlannerOptions& options, std::shared_ptr<WalkingModel> refine_model,
-                       WalkingObjective objective) {
+                       WalkingObjective objective, double period) {
              return std::make_unique<FootstepPlanner>(std::move(cost_model), geometry, options, std::move(refine_model),
-                                                      objective);
+                                                      objective, period);
            }),
            py::arg("cost_model"), py::arg("geometry"), py::arg("options"), py::arg("refine_model") = nullptr,
-           py::arg("objective") = WalkingObjective::kComWorkPlusHeat,
+           py::arg("objective") = WalkingObjective::kComWorkPlusHeat, py::arg("period") = 0.0,
            "With `refine_model`, plans are refined for `objective` (the cost model's).")
       .def("get_terrain_input_port", PortGetter(&FootstepPlanner::get_terrain_input_port), "Input `terrain`.")
       .def("get_start_input_port", PortGetter(&FootstepPlanner::get_start_input_port), "Input `start`.")

@@ -74,7 +74,10 @@ def test_footstep_planner_system_matches_the_function(walking_model, oracle):
         builder.Connect(source.get_output_port(0), port)
     builder.ExportOutput(planner.get_plan_output_port(), "plan")
     diagram = builder.Build()
-    plan = diagram.GetOutputPort("plan").Eval(diagram.CreateDefaultContext())
+    context = diagram.CreateDefaultContext()
+    assert not diagram.GetOutputPort("plan").Eval(context).found  # the search runs in an event
+    diagram.ExecuteForcedEvents(context)
+    plan = diagram.GetOutputPort("plan").Eval(context)
     direct = planning.PlanFootsteps(terrain, scenario.start(), scenario.goal(), oracle, geometry, options)
     assert plan.found
     ours = plan.to_dict()

@@ -122,6 +122,44 @@ TEST(PlanFootstepsTest, WalksAroundAWallAndKeepsTheBodyClear) {
   EXPECT_GT(plan.statistics.rejected_collision, 0);
 }
 
+// Uncertain evidence of an obstacle (occupied voxels with probability 0.6 where a wall would stand): the body
+// must keep clear of it at eta_geom = 0.9 (free with probability 0.4 < 0.9), and may walk through it when the
+// planner accepts a body box free with probability 0.3.
+TEST(PlanFootstepsTest, KeepsTheBodyOutOfUncertainObstaclesByItsFreeProbability) {
+  TerrainMap ground = FlatGround(-0.5, -1.5, 2.5, 1.5, 1.0);
+  std::vector<TerrainMap::OccupiedVoxel> voxels;
+  // 15 cm thick: stance midpoints advance at most 0.38 m per step, less than the wall plus the 0.3 m body.
+  for (double x = 0.875; x < 1.0; x += 0.05) {
+    for (double y = -0.575; y < 0.6; y += 0.05) {
+      for (double z = 0.725; z < 1.3; z += 0.05) voxels.push_back({Eigen::Vector3d(x, y, z), 0.6});
+    }
+  }
+  ground.SetOccupiedVoxels(voxels, 0.05);
+  const TestStepCostModel model;
+  const StanceGoal goal = GoalAt(1.8);
+  const BipedGeometry geometry;
+  FootstepPlannerOptions options = Options();
+  options.search.initial_epsilon = 2.0;
+  options.search.final_epsilon = 2.0;
+  const FootstepPlan cautious = PlanFootsteps(ground, StanceAt(0.0), goal, model, geometry, options);
+  ExpectConsistentPlan(cautious, goal, model);
+  for (int k = 0; k < static_cast<int>(cautious.steps.size()); ++k) {
+    const Stance s = cautious.StanceAfter(k);
+    const Eigen::Vector3d mid(0.5 * (s.left.x + s.right.x), 0.5 * (s.left.y + s.right.y),
+                              geometry.body_bottom + geometry.body_half_extents.z());
+    EXPECT_GE(ground.BoxFreeProbability(mid, geometry.body_half_extents, 0.5 * (s.left.theta + s.right.theta)), 0.9)
+        << "stance after step " << k;
+  }
+  EXPECT_GT(cautious.distance, 1.8 + 0.2);  // a detour
+  options.min_body_free_probability = 1e-300;  // any evidence is acceptable (0.4^162 > 1e-300): straight through
+  const FootstepPlan bold = PlanFootsteps(ground, StanceAt(0.0), goal, model, geometry, options);
+  ExpectConsistentPlan(bold, goal, model);
+  EXPECT_LT(bold.distance, 1.8 + 0.15);
+  options.min_body_free_probability = 0.0;
+  CAIRN_EXPECT_THROWS_WITH(PlanFootsteps(ground, StanceAt(0.0), goal, model, geometry, options),
+                           std::invalid_argument, "min_body_free_probability must be in (0, 1], got 0");
+}
+
 TEST(PlanFootstepsTest, ShortensStepsOnLowFrictionOrWalksAround) {
   // Slippery strip across the way: steps touching it must satisfy 0.05 + 0.5 dx <= 0.12, i.e. dx <= 0.14.
   TerrainMap ground = FlatGround(-0.5, -1.0, 2.5, 1.0, 1.0);

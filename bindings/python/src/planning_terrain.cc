@@ -1,0 +1,42 @@
+// cairn.planning (terrain from perception): TerrainAssemblyOptions, AssembleTerrain and the TerrainAssembler system.
+
+#include <memory>
+#include <utility>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.h"
+#include "cairn/planning/terrain/assemble_terrain.h"
+#include "cairn/planning/terrain/terrain_assembler.h"
+
+namespace cairn::python {
+
+using namespace cairn::planning;
+
+void DefinePlanningTerrain(py::module_ m) {
+  py::class_<TerrainAssemblyOptions>(m, "TerrainAssemblyOptions", "How AssembleTerrain reads grid and points.")
+      .def(py::init<>(), "Threshold 0.5, ground below 0.3 m, eta 0.95, exact quantiles, unseen material not walkable.")
+      .def_readwrite("occupied_threshold", &TerrainAssemblyOptions::occupied_threshold, "Occupied above this.")
+      .def_readwrite("max_ground_height", &TerrainAssemblyOptions::max_ground_height, "Highest foothold z, m.")
+      .def_readwrite("eta", &TerrainAssemblyOptions::eta, "Confidence of the friction quantile.")
+      .def_readwrite("quantile_method", &TerrainAssemblyOptions::quantile_method, "QuantileMethod.")
+      .def_readwrite("min_points", &TerrainAssemblyOptions::min_points, "Points a cell needs for a friction.")
+      .def_readwrite("unknown_friction", &TerrainAssemblyOptions::unknown_friction,
+                     "Friction of ground whose material was not seen (0: not walkable).");
+  m.def("AssembleTerrain", &AssembleTerrain, py::arg("grid"), py::arg("points"), py::arg("registry"),
+        py::arg("options") = TerrainAssemblyOptions(), py::call_guard<py::gil_scoped_release>(),
+        "TerrainMap from an OccupancyGrid and a FrictionPointCloud (ground, fused friction quantiles, voxels).");
+  py::class_<TerrainAssembler, systems::LeafSystem>(
+      m, "TerrainAssembler",
+      "System: inputs `grid` (OccupancyGrid), `friction_points` (FrictionPointCloud); output `terrain` (TerrainMap); "
+      "abstract parameter: the MaterialRegistry.")
+      .def(py::init([](perception::MaterialRegistry registry, const TerrainAssemblyOptions& options) {
+             return std::make_unique<TerrainAssembler>(std::move(registry), options);
+           }),
+           py::arg("registry"), py::arg("options") = TerrainAssemblyOptions(), "ValueError for bad options.")
+      .def("registry_parameter", &TerrainAssembler::registry_parameter, "Index of the registry parameter.");
+}
+
+}  // namespace cairn::python

@@ -1,0 +1,71 @@
+"""cairn.planning's terrain from perception: AssembleTerrain, the TerrainAssembler system, occupied voxels in planning."""
+
+import math
+
+import numpy as np
+import pytest
+
+import cairn.perception as perception
+import cairn.planning as planning
+
+
+def floor_grid():
+    """A 1 m x 0.5 m floor at z = 0 seen with probability 0.8, and a post whose top rises above 0.3 m."""
+    grid = perception.OccupancyGrid(np.array([0.0, 0.0, -0.1]), 0.05, np.array([20, 10, 16]))
+    for c in range(20):
+        for r in range(10):
+            grid.Update(grid.Index(np.array([c, r, 2])), math.log(0.8 / 0.2))
+    for k in range(4, 14):
+        grid.Update(grid.Index(np.array([5, 5, k])), math.log(0.7 / 0.3))
+    return grid
+
+
+def wood_points(registry):
+    xs, ys = np.meshgrid(np.arange(0.005, 1.0, 0.01), np.arange(0.005, 0.5, 0.01))
+    points = np.stack([xs.ravel(), ys.ravel(), np.zeros(xs.size)], axis=1)
+    weights = np.zeros((len(points), registry.size()), dtype=np.float32)
+    weights[:, registry.IndexOf("wood")] = 1.0
+    return perception.FrictionPointCloud(points, np.zeros(len(points), dtype=np.float32), weights)
+
+
+def test_assemble_terrain_and_the_system_agree():
+    registry = perception.MaterialRegistry.ThesisTable33()
+    grid, points = floor_grid(), wood_points(registry)
+    terrain = planning.AssembleTerrain(grid, points, registry)
+    assert (terrain.cols(), terrain.rows()) == (20, 10)
+    assert terrain.height(3, 3) == pytest.approx(0.0, abs=1e-6)
+    wood = np.zeros(registry.size())
+    wood[registry.IndexOf("wood")] = 1.0
+    expected = perception.FrictionQuantile(registry, wood, 0.95, perception.QuantileMethod.kExact)
+    assert terrain.friction(3, 3) == pytest.approx(expected, abs=1e-4)
+    centers, probabilities = terrain.occupied_voxels()
+    assert centers.shape == (6, 3) and np.all(centers[:, 2] > 0.3)
+    np.testing.assert_allclose(probabilities, 0.7, atol=1e-6)
+    assert terrain.BoxFreeProbability(np.array([0.275, 0.275, 0.8]), np.array([0.15, 0.25, 0.35]), 0.0) == \
+        pytest.approx(0.3 ** 3, rel=1e-5)
+
+    assembler = planning.TerrainAssembler(registry)
+    context = assembler.CreateDefaultContext()
+    assembler.GetInputPort("grid").FixValue(context, grid)
+    assembler.GetInputPort("friction_points").FixValue(context, points)
+    out = assembler.GetOutputPort("terrain").Eval(context)
+    assert out.friction(3, 3) == pytest.approx(terrain.friction(3, 3))
+
+    options = planning.TerrainAssemblyOptions()
+    options.eta = 1.5
+    with pytest.raises(ValueError, match=r"eta is 1.5; it must be in \(0, 1\)"):
+        planning.TerrainAssembler(registry, options)
+
+
+def test_voxels_and_the_planners_free_probability_level():
+    terrain = planning.TerrainMap(np.array([0.0, 0.0]), 40, 40, 0.05)
+    terrain.SetOccupiedVoxels(np.array([[1.0, 1.0, 0.8], [1.1, 1.2, 0.6]]), np.array([0.3, 0.5]), 0.05)
+    assert terrain.voxel_size() == 0.05
+    half = np.array([0.15, 0.25, 0.35])
+    assert terrain.BoxFreeProbability(np.array([1.0, 1.0, 0.8]), half, 0.0) == pytest.approx(0.35)
+    with pytest.raises(ValueError, match="2 centres but 1 probabilities"):
+        terrain.SetOccupiedVoxels(np.zeros((2, 3)), np.array([0.5]), 0.05)
+    with pytest.raises(ValueError, match="voxel 0"):
+        terrain.SetOccupiedVoxels(np.zeros((1, 3)), np.array([1.0]), 0.05)
+    options = planning.FootstepPlannerOptions()
+    assert options.min_body_free_probability == pytest.approx(0.9)
