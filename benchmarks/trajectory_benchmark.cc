@@ -106,7 +106,8 @@ void BM_WholeBody(benchmark::State& state, const std::string& name, const std::s
 
 void Register() {
   // Whole plan with either Hessian, and a receding window of 2 stances with the Hessian.
-  const std::vector<std::pair<std::string, int>> configurations = {{"exact", 0}, {"limited-memory", 0}, {"exact", 2}};
+  const std::vector<std::pair<std::string, int>> configurations = {
+      {"gauss-newton", 0}, {"exact", 0}, {"limited-memory", 0}, {"gauss-newton", 2}, {"exact", 2}};
   for (const std::string name : {"flat", "ice_narrow_012"}) {
     for (const auto& [hessian, window] : configurations) {
       benchmark::RegisterBenchmark(("BM_WholeBody/" + name + "/" + hessian + "/window:" + std::to_string(window)).c_str(),

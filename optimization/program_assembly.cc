@@ -12,8 +12,9 @@
 
 namespace cairn::optimization {
 
-ProgramAssembly::ProgramAssembly(const MathematicalProgram& prog)
+ProgramAssembly::ProgramAssembly(const MathematicalProgram& prog, LeastSquaresHessian least_squares_hessian)
     : prog_(&prog),
+      least_squares_hessian_(least_squares_hessian),
       num_vars_(prog.num_vars()),
       x_lower_(prog.variable_lower_bounds()),
       x_upper_(prog.variable_upper_bounds()) {
@@ -39,7 +40,7 @@ ProgramAssembly::ProgramAssembly(const MathematicalProgram& prog)
   cost_terms_.reserve(prog.costs().size());
   least_squares_terms_.reserve(prog.least_squares_costs().size());
   constraint_terms_.reserve(prog.constraints().size());
-  auto make_term = [&](const auto& binding, bool is_constraint) {
+  auto make_term = [&](const auto& binding, bool is_constraint, bool is_least_squares = false) {
     Term term;
     term.evaluator = binding.evaluator().get();
     term.var_offset = static_cast<int>(var_indices_.size());
@@ -63,7 +64,8 @@ ProgramAssembly::ProgramAssembly(const MathematicalProgram& prog)
       jac_size += term.evaluator->jacobian_nonzeros();
     }
     term.hess_offset = hess_size;
-    if (term.evaluator->has_hessian()) {
+    const bool gauss_newton = is_least_squares && least_squares_hessian == LeastSquaresHessian::kGaussNewton;
+    if (term.evaluator->has_hessian() && !gauss_newton) {
       term.hess_pattern = term.evaluator->hessian_pattern();
       hess_size += static_cast<int>(term.hess_pattern.size());
     }
@@ -74,7 +76,7 @@ ProgramAssembly::ProgramAssembly(const MathematicalProgram& prog)
     has_hessian_ = has_hessian_ && cost.evaluator()->has_hessian();
   }
   for (const auto& cost : prog.least_squares_costs()) {
-    least_squares_terms_.push_back(make_term(cost, false));
+    least_squares_terms_.push_back(make_term(cost, false, true));
     Term& term = least_squares_terms_.back();
     term.row_offset = num_residuals_;
     num_residuals_ += term.evaluator->num_outputs();
@@ -83,7 +85,7 @@ ProgramAssembly::ProgramAssembly(const MathematicalProgram& prog)
       residual_rows_.push_back(term.row_offset + e.row);
       residual_cols_.push_back(cost.variables().indices()[static_cast<std::size_t>(e.col)]);
     }
-    if (!term.evaluator->has_hessian()) {
+    if (!term.evaluator->has_hessian() && least_squares_hessian_ == LeastSquaresHessian::kExact) {
       has_hessian_ = false;
     } else {
       // Hessian of 1/2 ||r||^2 = J'J + sum_k r_k Hessian(r_k): the local pattern is the union of the J'J pairs
@@ -295,7 +297,9 @@ void ProgramAssembly::EvalLagrangianHessian(const double* x, double objective_fa
       const LeastSquaresPair& p = ls_pairs_[static_cast<std::size_t>(term.ls_pair_offset + k)];
       local[p.local] += jac[p.a] * jac[p.b];
     }
-    const int residual_count = static_cast<int>(term.evaluator->hessian_pattern().size());
+    const int residual_count = least_squares_hessian_ == LeastSquaresHessian::kGaussNewton || !term.evaluator->has_hessian()
+                                   ? 0
+                                   : static_cast<int>(term.evaluator->hessian_pattern().size());
     if (residual_count > 0) {
       auto residual_hessian = residual_hess_local_.segment(term.residual_hess_offset, residual_count);
       term.evaluator->DoEvalHessian(x_local, r, residual_hessian);

@@ -19,8 +19,19 @@ namespace cairn::optimization {
 /// per solve (or per thread); the program itself is only read.
 class ProgramAssembly {
  public:
+  /// How the Hessian of a least-squares cost 1/2 ||r(x)||^2 is formed.
+  enum class LeastSquaresHessian {
+    /// J'J + sum_k r_k Hessian(r_k): needs the residual's Hessian.
+    kExact,
+    /// J'J alone (Gauss-Newton): positive semidefinite, costs nothing beyond the residual Jacobian, and needs no
+    /// residual Hessian. Close to the exact Hessian where the residuals are small or nearly linear; it drops
+    /// their curvature, so Newton's quadratic convergence becomes linear near a solution with large residuals.
+    kGaussNewton,
+  };
+
   /// Builds the structures for `prog`, which must outlive the assembly.
-  explicit ProgramAssembly(const MathematicalProgram& prog);
+  explicit ProgramAssembly(const MathematicalProgram& prog,
+                           LeastSquaresHessian least_squares_hessian = LeastSquaresHessian::kExact);
 
   /// The program this assembly reads.
   const MathematicalProgram& program() const { return *prog_; }
@@ -48,6 +59,7 @@ class ProgramAssembly {
 
   /// True if every cost and constraint provides a Hessian. A least-squares cost provides one when its residual
   /// does (its Hessian is J'J + sum_k r_k Hessian(r_k)); a linear residual declares an empty Hessian pattern.
+  /// With LeastSquaresHessian::kGaussNewton every least-squares cost provides one (J'J).
   bool has_hessian() const { return has_hessian_; }
   /// Lower-triangle Hessian rows (row >= col), unique entries.
   const std::vector<int>& hessian_rows() const { return hessian_rows_; }
@@ -106,6 +118,7 @@ class ProgramAssembly {
   void Gather(const Term& term, const double* x);
 
   const MathematicalProgram* prog_;
+  LeastSquaresHessian least_squares_hessian_;
   int num_vars_{0};
   int num_rows_{0};
   int num_residuals_{0};

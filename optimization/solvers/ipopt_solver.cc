@@ -139,6 +139,20 @@ const char* TypeName(Ipopt::RegisteredOptionType type) {
   }
 }
 
+// Cairn's own option (Ipopt knows only the Lagrangian's Hessian, not how a least-squares cost forms it).
+constexpr const char* kLeastSquaresHessianOption = "least_squares_hessian";
+
+ProgramAssembly::LeastSquaresHessian LeastSquaresHessianOption(const SolverOptions::OptionMap& options) {
+  const auto it = options.find(kLeastSquaresHessianOption);
+  if (it == options.end()) return ProgramAssembly::LeastSquaresHessian::kExact;
+  const std::string* text = std::get_if<std::string>(&it->second);
+  if (text != nullptr && *text == "exact") return ProgramAssembly::LeastSquaresHessian::kExact;
+  if (text != nullptr && *text == "gauss-newton") return ProgramAssembly::LeastSquaresHessian::kGaussNewton;
+  throw std::invalid_argument(std::string("IpoptSolver: option '") + kLeastSquaresHessianOption + "' is " +
+                              SolverOptions::ToString(it->second) + "; give 'exact' (J'J plus the residuals' curvature) " +
+                              "or 'gauss-newton' (J'J alone).");
+}
+
 void ApplyOption(Ipopt::IpoptApplication* app, const std::string& name, const SolverOptions::Value& value) {
   Ipopt::SmartPtr<const Ipopt::RegisteredOption> option = app->RegOptions()->GetOption(name);
   if (!Ipopt::IsValid(option)) {
@@ -241,7 +255,7 @@ std::string IpoptSolver::DoCheckSupport(const MathematicalProgram& prog) const {
 
 SolverResult IpoptSolver::DoSolve(const MathematicalProgram& prog, const Eigen::VectorXd& initial_guess,
                                   const SolverOptions::OptionMap& options) const {
-  ProgramAssembly assembly(prog);
+  ProgramAssembly assembly(prog, LeastSquaresHessianOption(options));
   SolverResult result;
   result.x = initial_guess;
 
@@ -259,6 +273,7 @@ SolverResult IpoptSolver::DoSolve(const MathematicalProgram& prog, const Eigen::
           "term (an evaluator or residual that declares no Hessian pattern) has none; use "
           "'limited-memory' or provide Hessians.");
     }
+    if (name == kLeastSquaresHessianOption) continue;
     ApplyOption(app.operator->(), name, value);
   }
   // Initialize("") skips ./ipopt.opt, which Initialize() would silently read from the working directory.

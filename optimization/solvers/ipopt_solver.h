@@ -11,7 +11,10 @@ namespace cairn::optimization {
 /// Options (key "ipopt"): any registered Ipopt option by its Ipopt name, with its Ipopt type (integer, number
 /// or string; an integer is accepted for a number). Unknown names and wrong types are rejected with the closest
 /// valid names. Defaults that differ from Ipopt's: print_level = 0 and sb = "yes" (quiet). The options file
-/// ./ipopt.opt is never read.
+/// ./ipopt.opt is never read. One option is Cairn's, not Ipopt's: "least_squares_hessian" = "exact" (default:
+/// J'J + sum_k r_k Hessian(r_k) for every least-squares cost, which needs the residuals' Hessians) or
+/// "gauss-newton" (J'J alone, ProgramAssembly::LeastSquaresHessian::kGaussNewton), which lets Ipopt use an exact
+/// Hessian mode when residuals have no second derivatives or when theirs are expensive.
 ///
 /// Thread safety: Ipopt 3.11 as packaged by Debian (MUMPS sequential) crashes or hangs when two solves run at
 /// once in one process, even with separate IpoptApplication objects. Every IpoptSolver::Solve therefore holds a

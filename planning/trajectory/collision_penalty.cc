@@ -44,7 +44,7 @@ int NumInputs(const std::shared_ptr<const multibody::Model>& model, const std::s
 CollisionPenalty::CollisionPenalty(const std::string& name, std::shared_ptr<const multibody::Model> model,
                                    const std::vector<EnvironmentBox>& environment,
                                    const std::vector<std::string>& contact_bodies, double d_safe, double self_margin,
-                                   double fraction, double ground_height)
+                                   double fraction, double ground_height, CollisionHessian hessian)
     : optimization::Evaluator(name, NumInputs(model, name, d_safe, self_margin, fraction), 1,
                               DensePattern(1, NumInputs(model, name, d_safe, self_margin, fraction)),
                               optimization::DerivativeSource::kAnalytic),
@@ -55,6 +55,7 @@ CollisionPenalty::CollisionPenalty(const std::string& name, std::shared_ptr<cons
       self_margin_(self_margin),
       fraction_(fraction),
       sample_(fraction > 0.0),
+      hessian_(hessian),
       world_(*model_) {
   std::vector<int> all(static_cast<std::size_t>(num_inputs()));
   for (int i = 0; i < num_inputs(); ++i) all[static_cast<std::size_t>(i)] = i;
@@ -131,17 +132,51 @@ double CollisionPenalty::GroundPenalty(const multibody::Data& data, Eigen::Vecto
     if (h <= 0.0) continue;
     sum += h * h;
     if (gradient == nullptr) continue;
-    // d(z_p)/dv along every joint between the body and the root: the z velocity of p under each motion column.
-    for (int i = point.body; i > 0; i = model_->parent(i)) {
-      const multibody::Joint& joint = model_->joint(i);
-      const multibody::Pose& X = data.X_world[static_cast<std::size_t>(i)];
-      for (int k = 0; k < joint.nv; ++k) {
-        const multibody::Vector6d s = X.ActMotion(multibody::internal::MotionSubspaceColumn(joint, k));
-        (*gradient)(joint.idx_v + k) -= 2.0 * h * (s.tail<3>() + s.head<3>().cross(p_W)).z();
-      }
-    }
+    Eigen::VectorXd dz = Eigen::VectorXd::Zero(model_->nv());
+    HeightGradient(data, point.body, p_W, dz);
+    *gradient -= 2.0 * h * dz;
   }
   return sum;
+}
+
+void CollisionPenalty::HeightGradient(const multibody::Data& data, int body, const Eigen::Vector3d& p_W,
+                                      Eigen::Ref<Eigen::VectorXd> dz) const {
+  // Along every joint between the body and the root: the z velocity of p under each motion column.
+  for (int i = body; i > 0; i = model_->parent(i)) {
+    const multibody::Joint& joint = model_->joint(i);
+    const multibody::Pose& X = data.X_world[static_cast<std::size_t>(i)];
+    for (int k = 0; k < joint.nv; ++k) {
+      const multibody::Vector6d s = X.ActMotion(multibody::internal::MotionSubspaceColumn(joint, k));
+      dz(joint.idx_v + k) = (s.tail<3>() + s.head<3>().cross(p_W)).z();
+    }
+  }
+}
+
+Eigen::MatrixXd CollisionPenalty::GaussNewtonHessian(const Eigen::VectorXd& q_raw) const {
+  const int nv = model_->nv();
+  const Eigen::VectorXd q = chart_.Normalized(q_raw);
+  multibody::Data data(*model_);
+  // One row per pair or ground point within its margin: the tangent gradient of its distance.
+  std::vector<Eigen::VectorXd> rows;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    Eigen::VectorXd pair_gradient(nv);
+    for (const auto& [pair, margin] : Pairs(q, &data)) {
+      world_.DistanceGradient(*model_, data, pair, pair_gradient);
+      rows.push_back(pair_gradient);
+    }
+  }
+  for (const GroundPoint& point : ground_points_) {
+    const Eigen::Vector3d p_W = data.X_world[static_cast<std::size_t>(point.body)] * point.p_B;
+    if (d_safe_ - (p_W.z() - point.radius - ground_height_) <= 0.0) continue;
+    Eigen::VectorXd dz = Eigen::VectorXd::Zero(nv);
+    HeightGradient(data, point.body, p_W, dz);
+    rows.push_back(std::move(dz));
+  }
+  Eigen::MatrixXd G(static_cast<Eigen::Index>(rows.size()), nv);
+  for (std::size_t r = 0; r < rows.size(); ++r) G.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
+  const Eigen::MatrixXd J = chart_.TangentToCoordinates(q_raw, G);
+  return 2.0 * J.transpose() * J;
 }
 
 double CollisionPenalty::GroundDistance(const multibody::Data& data, std::string* which) const {
@@ -162,6 +197,20 @@ CollisionPenalty::~CollisionPenalty() = default;
 void CollisionPenalty::DoEvalHessian(const Eigen::Ref<const Eigen::VectorXd>& x,
                                      const Eigen::Ref<const Eigen::VectorXd>& weights,
                                      Eigen::Ref<Eigen::VectorXd> hessian_values) const {
+  if (hessian_ == CollisionHessian::kGaussNewton) {
+    const int nq = model_->nq();
+    const Eigen::VectorXd q_raw = sample_ ? Eigen::VectorXd((1.0 - fraction_) * x.head(nq) + fraction_ * x.tail(nq))
+                                          : Eigen::VectorXd(x);
+    const Eigen::MatrixXd H = weights(0) * GaussNewtonHessian(q_raw);
+    const std::vector<optimization::SparsityEntry>& pattern = hessian_pattern();
+    for (std::size_t k = 0; k < pattern.size(); ++k) {
+      const int r = pattern[k].row, c = pattern[k].col;
+      const double wr = !sample_ ? 1.0 : r < nq ? 1.0 - fraction_ : fraction_;
+      const double wc = !sample_ ? 1.0 : c < nq ? 1.0 - fraction_ : fraction_;
+      hessian_values(static_cast<Eigen::Index>(k)) = wr * wc * H(r % nq, c % nq);
+    }
+    return;
+  }
   if (!sample_) {
     HessianByDifferences(*this, x, weights, hessian_pattern(), hessian_values);
     return;

@@ -30,7 +30,12 @@ optimization::SolverOptions MakeSolverOptions(const optimization::Solver& solver
     out.Set("ipopt", "tol", options.tolerance);
     out.Set("ipopt", "constr_viol_tol", 0.1 * options.tolerance);
     out.Set("ipopt", "acceptable_iter", 0);  // never stop at the merely "acceptable" level
-    out.Set("ipopt", "hessian_approximation", options.hessian);
+    if (options.hessian == "gauss-newton") {
+      out.Set("ipopt", "hessian_approximation", "exact");
+      out.Set("ipopt", "least_squares_hessian", "gauss-newton");
+    } else {
+      out.Set("ipopt", "hessian_approximation", options.hessian);
+    }
   } else if (solver.options_key() == "nlopt") {
     out.Set("nlopt", "maxeval", 50 * options.max_iterations);
     out.Set("nlopt", "constraint_tol", 0.1 * options.tolerance);

@@ -33,9 +33,9 @@ void ValidateTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
   Require(o.com_margin >= 0.0 && o.com_margin < 0.5 * std::min(o.sole_length, o.sole_width), "com_margin",
           o.com_margin, "in [0, half the sole's smaller side)");
   Require(!std::isinf(o.ground_height), "ground_height", o.ground_height, "finite, or NaN for no ground");
-  if (o.hessian != "exact" && o.hessian != "limited-memory") {
+  if (o.hessian != "gauss-newton" && o.hessian != "exact" && o.hessian != "limited-memory") {
     throw std::invalid_argument("TrajectoryOptimizerOptions: hessian is '" + o.hessian +
-                                "'; it must be 'exact' or 'limited-memory'");
+                                "'; it must be 'gauss-newton', 'exact' or 'limited-memory'");
   }
   Require(o.max_iterations >= 1 && o.max_iterations <= 100000, "max_iterations", o.max_iterations,
           "in [1, 100000]");

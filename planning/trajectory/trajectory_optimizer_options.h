@@ -47,8 +47,14 @@ struct TrajectoryOptimizerOptions {
   double ground_height{0.0};
   /// Solver by name (MakeSolver): "ipopt" (default) or e.g. "nlopt:SLSQP" for small problems.
   std::string solver{"ipopt"};
-  /// Ipopt's Hessian: "exact" (every term provides one: analytic for the quadratic terms, differences of the
-  /// analytic Jacobians for the kinematic ones) or "limited-memory" (L-BFGS).
+  /// Ipopt's Hessian of the Lagrangian:
+  /// - "gauss-newton": J'J for the squared torques (the least-squares cost's Gauss-Newton matrix, Ipopt option
+  ///   least_squares_hessian) and 2 sum J_p' J_p for the collision hinges (CollisionHessian::kGaussNewton);
+  ///   analytic for the quadratic terms and differences of the analytic Jacobians for the constraints, whose
+  ///   curvature the multipliers need;
+  /// - "exact": every term's Hessian, the kinematic ones by differences of their analytic Jacobians (2 nq
+  ///   Jacobian evaluations per term and iteration);
+  /// - "limited-memory": L-BFGS.
   std::string hessian{"exact"};
   /// Solver iteration budget (Ipopt max_iter; NLopt maxeval is 50 times it).
   int max_iterations{500};

@@ -25,6 +25,10 @@ namespace cairn::planning {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+CollisionHessian CollisionHessianOf(const TrajectoryOptimizerOptions& options) {
+  return options.hessian == "gauss-newton" ? CollisionHessian::kGaussNewton : CollisionHessian::kDifferences;
+}
+
 // The bodies whose geometry touches the ground through a contact frame: the frame's body and the bodies welded
 // to it on the way to the root (the sole frame sits on a massless body fixed to the foot).
 std::vector<std::string> ContactBodies(const multibody::Model& model, const std::vector<WaypointContact>& contacts) {
@@ -138,7 +142,8 @@ TrajectoryProblem::TrajectoryProblem(std::shared_ptr<const multibody::Model> mod
     prog_.AddLeastSquaresCost(std::make_shared<ScaledEvaluator>(torque, std::sqrt(2.0 * options_.torque_weight)), q);
     auto collision = std::make_shared<CollisionPenalty>("collision(" + spec.label + ")", model_, boxes,
                                                         ContactBodies(model_ref, spec.contacts), options_.d_safe,
-                                                        options_.self_margin, 0.0, options_.ground_height);
+                                                        options_.self_margin, 0.0, options_.ground_height,
+                                                        CollisionHessianOf(options_));
     waypoint_collisions_.push_back(collision);
     if (options_.collision_weight > 0.0) {
       prog_.AddCost(std::make_shared<ScaledEvaluator>(collision, options_.collision_weight), q);
@@ -221,7 +226,8 @@ TrajectoryProblem::TrajectoryProblem(std::shared_ptr<const multibody::Model> mod
       const double fraction = static_cast<double>(k) / (options_.samples_between + 1);
       auto sample = std::make_shared<CollisionPenalty>("collision(" + a.label + " -> " + b.label + ")", model_, boxes,
                                                        CommonContactBodies(model_ref, a, b), options_.d_safe,
-                                                       options_.self_margin, fraction, options_.ground_height);
+                                                       options_.self_margin, fraction, options_.ground_height,
+                                                       CollisionHessianOf(options_));
       sample_collisions_.emplace_back(sample, both);
       if (options_.collision_weight > 0.0) {
         prog_.AddCost(std::make_shared<ScaledEvaluator>(sample, options_.collision_weight), both);

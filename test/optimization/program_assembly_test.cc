@@ -99,6 +99,40 @@ TEST(ProgramAssemblyTest, LagrangianHessianMatchesDifferencesOfTheGradient) {
   }
 }
 
+// Gauss-Newton keeps J'J of every least-squares cost and drops the residuals' curvature, so a residual without
+// a Hessian no longer blocks the exact-Hessian path, and the result is the J'J of the stacked residual Jacobian.
+TEST(ProgramAssemblyTest, GaussNewtonHessianIsJTransposeJ) {
+  MathematicalProgram prog;
+  const auto x = prog.NewContinuousVariables(3, "x");
+  // r(a, b) = (a b, a^2 - b): curved, and declares no Hessian.
+  auto residual = std::make_shared<FunctionEvaluator>(
+      "curved", 2, 2, std::vector<SparsityEntry>{{0, 0}, {0, 1}, {1, 0}, {1, 1}},
+      [](const Ref<const VectorXd>& v, Ref<VectorXd> r) { r << v[0] * v[1], v[0] * v[0] - v[1]; },
+      [](const Ref<const VectorXd>& v, Ref<VectorXd> r, Ref<VectorXd> j) {
+        r << v[0] * v[1], v[0] * v[0] - v[1];
+        j << v[1], v[0], 2 * v[0], -1;
+      });
+  prog.AddLeastSquaresCost(residual, x.Segment(0, 2));
+  prog.AddLeastSquaresCost(residual, DecisionVariables::Concatenate({x.Element(2), x.Element(0)}));
+  EXPECT_FALSE(ProgramAssembly(prog).has_hessian());
+  ProgramAssembly assembly(prog, ProgramAssembly::LeastSquaresHessian::kGaussNewton);
+  ASSERT_TRUE(assembly.has_hessian());
+  const Eigen::Vector3d at(0.3, -1.2, 2.1);
+  VectorXd r(assembly.num_residuals());
+  VectorXd jac(static_cast<Eigen::Index>(assembly.residual_jacobian_rows().size()));
+  assembly.EvalResidualsAndJacobian(at.data(), r.data(), jac.data());
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(assembly.num_residuals(), 3);
+  for (int k = 0; k < jac.size(); ++k) J(assembly.residual_jacobian_rows()[k], assembly.residual_jacobian_cols()[k]) += jac[k];
+  const Eigen::MatrixXd expected = 2.5 * J.transpose() * J;  // objective factor 2.5
+  VectorXd h(static_cast<Eigen::Index>(assembly.hessian_rows().size()));
+  assembly.EvalLagrangianHessian(at.data(), 2.5, nullptr, h.data());
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, 3);
+  for (int k = 0; k < h.size(); ++k) H(assembly.hessian_rows()[k], assembly.hessian_cols()[k]) = h[k];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j <= i; ++j) EXPECT_NEAR(H(i, j), expected(i, j), 1e-12) << i << "," << j;
+  }
+}
+
 TEST(ProgramAssemblyTest, NoHessianWhenATermLacksOne) {
   const test::TestProblem hs100 = test::MakeHs100();
   EXPECT_FALSE(ProgramAssembly(*hs100.prog).has_hessian());

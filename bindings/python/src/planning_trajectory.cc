@@ -52,6 +52,8 @@ void DefinePlanningTrajectory(py::module_ m) {
       .def_readwrite("com_margin", &TrajectoryOptimizerOptions::com_margin, "COM margin, m.")
       .def_readwrite("ground_height", &TrajectoryOptimizerOptions::ground_height, "Ground plane, m (NaN: none).")
       .def_readwrite("solver", &TrajectoryOptimizerOptions::solver, "Solver name (MakeSolver).")
+      .def_readwrite("hessian", &TrajectoryOptimizerOptions::hessian,
+                     "Ipopt's Hessian: 'exact', 'gauss-newton' or 'limited-memory'.")
       .def_readwrite("max_iterations", &TrajectoryOptimizerOptions::max_iterations, "Iteration budget.")
       .def_readwrite("tolerance", &TrajectoryOptimizerOptions::tolerance, "Solver tolerance.")
       .def_readwrite("window_stances", &TrajectoryOptimizerOptions::window_stances, "0: whole plan.");

@@ -94,6 +94,24 @@ def test_least_squares_with_a_python_residual():
     np.testing.assert_allclose(result.x, [3.0, 0.5], atol=1e-9)
 
 
+def test_gauss_newton_least_squares_hessian_in_ipopt():
+    # The residual declares no Hessian: Ipopt's exact mode needs the Gauss-Newton J'J for it.
+    prog = MathematicalProgram()
+    p = prog.NewContinuousVariables(2, "p")
+    t = np.linspace(0.0, 1.0, 20)
+    y = np.exp(0.7 * t) * 1.5
+    prog.AddLeastSquaresCost(lambda v: v[0] * np.exp(v[1] * t) - y, p, 20,
+                             jacobian=lambda v: np.stack([np.exp(v[1] * t), v[0] * t * np.exp(v[1] * t)], axis=1))
+    options = SolverOptions()
+    options.Set("ipopt", "hessian_approximation", "exact")
+    with pytest.raises(ValueError, match="needs a Hessian from every cost"):
+        IpoptSolver().Solve(prog, np.array([1.0, 0.0]), options)
+    options.Set("ipopt", "least_squares_hessian", "gauss-newton")
+    result = IpoptSolver().Solve(prog, np.array([1.0, 0.0]), options)
+    assert result.is_success(), result.message
+    np.testing.assert_allclose(result.x, [1.5, 0.7], atol=1e-6)
+
+
 def test_function_evaluator_with_sparse_pattern_and_hessian():
     # f(x) = [x0^2, x1 x2]; pattern entries (0, 0), (1, 1), (1, 2).
     evaluator = FunctionEvaluator(

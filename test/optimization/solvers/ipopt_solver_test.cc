@@ -155,6 +155,21 @@ TEST(IpoptSolverTest, RejectsExactHessianWhenATermHasNone) {
                            "hessian_approximation = 'exact' needs a Hessian from every cost and constraint");
 }
 
+TEST(IpoptSolverTest, GaussNewtonLeastSquaresHessian) {
+  // Zero residual at the optimum: Gauss-Newton reaches it as the exact Hessian does.
+  const test::TestProblem p = test::MakeChainedRosenbrock(30);
+  SolverOptions options;
+  options.Set("ipopt", "least_squares_hessian", "gauss-newton");
+  const SolverResult result = IpoptSolver().Solve(*p.prog, p.prog->initial_guess(), options);
+  ASSERT_EQ(result.status, SolutionStatus::kSolved) << result.message;
+  EXPECT_LT((result.x - p.optimal_x).cwiseAbs().maxCoeff(), 1e-5);
+
+  SolverOptions bad;
+  bad.Set("ipopt", "least_squares_hessian", "newton");
+  CAIRN_EXPECT_THROWS_WITH(IpoptSolver().Solve(*p.prog, p.prog->initial_guess(), bad), std::invalid_argument,
+                           "option 'least_squares_hessian' is 'newton'; give 'exact'");
+}
+
 TEST(IpoptSolverTest, NeverReadsIpoptOptFromTheWorkingDirectory) {
   // An ipopt.opt that would stop Ipopt after one iteration must have no effect.
   {

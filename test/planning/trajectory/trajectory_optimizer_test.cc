@@ -48,6 +48,12 @@ TEST(TrajectoryOptimizerTest, RejectsABadPeriod) {
                            std::invalid_argument, "period -1 s must be finite and >= 0");
   CAIRN_EXPECT_THROWS_WITH(TrajectoryOptimizer(nullptr, TrajectoryOptimizerOptions()), std::invalid_argument,
                            "model is null");
+  TrajectoryOptimizerOptions newton;
+  newton.hessian = "newton";
+  CAIRN_EXPECT_THROWS_WITH(ValidateTrajectoryOptimizerOptions(newton), std::invalid_argument,
+                           "hessian is 'newton'; it must be 'gauss-newton', 'exact' or 'limited-memory'");
+  newton.hessian = "gauss-newton";
+  EXPECT_NO_THROW(ValidateTrajectoryOptimizerOptions(newton));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Gradient checks and values of the whole-body evaluators of problem (2.9).
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -194,6 +195,50 @@ TEST(CollisionPenaltyTest, PenalisesABarAtTheHeadWithAnExactGradient) {
   Eigen::VectorXd away = q;
   away(0) += 3.0;
   EXPECT_EQ(penalty.Eval(away)(0), 0.0);
+}
+
+// With one pair in its margin the penalty is f = h^2 with gradient -2 h J, so its Gauss-Newton Hessian 2 J'J is
+// exactly grad f grad f' / (2 f); between waypoints the same matrix splits into blocks by the blend weights.
+TEST(CollisionPenaltyTest, GaussNewtonHessianIsTheOuterProductOfThePairGradients) {
+  const auto model = Humanoid();
+  const Eigen::VectorXd q = test::BentKneePosture(*model);
+  multibody::Data data(*model);
+  multibody::ForwardKinematics(*model, data, q);
+  const Eigen::Vector3d head = data.X_world[static_cast<std::size_t>(model->GetBodyIndex("head"))].translation();
+  EnvironmentBox bar{"bar", Eigen::Vector3d(0.1, 2.0, 0.1),
+                     multibody::Pose(Eigen::Matrix3d::Identity(), head + Eigen::Vector3d(0.02, 0, 0.06 + 0.1 + 0.01 + 0.05))};
+  const CollisionPenalty penalty("collision", model, {bar}, {"l_foot", "r_foot"}, 0.025, 0.01, 0.0,
+                                 std::numeric_limits<double>::quiet_NaN(), CollisionHessian::kGaussNewton);
+  Eigen::VectorXd scaled = q;
+  scaled.segment<4>(3) *= 1.2;  // the same pose, read through the quaternion chart
+  ASSERT_EQ(penalty.PairsWithinMargin(scaled).size(), 1u);
+  const int nq = model->nq();
+  Eigen::VectorXd f(1);
+  Eigen::VectorXd gradient(nq);
+  penalty.EvalWithJacobian(scaled, f, gradient);
+  ASSERT_GT(f(0), 0.0);
+  const Eigen::MatrixXd expected = gradient * gradient.transpose() / (2.0 * f(0));
+  const auto dense = [](const optimization::Evaluator& e, const Eigen::VectorXd& x, double weight) {
+    Eigen::VectorXd values(static_cast<Eigen::Index>(e.hessian_pattern().size()));
+    e.EvalHessian(x, Eigen::VectorXd::Constant(1, weight), values);
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(e.num_inputs(), e.num_inputs());
+    for (std::size_t k = 0; k < e.hessian_pattern().size(); ++k) {
+      const auto& entry = e.hessian_pattern()[k];
+      H(entry.row, entry.col) = H(entry.col, entry.row) = values(static_cast<Eigen::Index>(k));
+    }
+    return H;
+  };
+  const Eigen::MatrixXd H = dense(penalty, scaled, 3.0);
+  EXPECT_LT((H - 3.0 * expected).cwiseAbs().maxCoeff(), 1e-9 * (1.0 + expected.cwiseAbs().maxCoeff()));
+
+  const CollisionPenalty sample("sample", model, {bar}, {}, 0.025, 0.01, 0.25,
+                                std::numeric_limits<double>::quiet_NaN(), CollisionHessian::kGaussNewton);
+  Eigen::VectorXd both(2 * nq);
+  both << scaled, scaled;
+  const Eigen::MatrixXd Hs = dense(sample, both, 1.0);
+  EXPECT_LT((Hs.topLeftCorner(nq, nq) - 0.75 * 0.75 * expected).cwiseAbs().maxCoeff(), 1e-9 * (1.0 + expected.norm()));
+  EXPECT_LT((Hs.bottomLeftCorner(nq, nq) - 0.25 * 0.75 * expected).cwiseAbs().maxCoeff(), 1e-9 * (1.0 + expected.norm()));
+  EXPECT_LT((Hs.bottomRightCorner(nq, nq) - 0.25 * 0.25 * expected).cwiseAbs().maxCoeff(), 1e-9 * (1.0 + expected.norm()));
 }
 
 }  // namespace
