@@ -89,8 +89,15 @@ CollisionPenalty::CollisionPenalty(const std::string& name, std::shared_ptr<cons
                                   ", " + FormatShort(box.size.y()) + ", " + FormatShort(box.size.z()) +
                                   "); every side must be positive and finite");
     }
-    world_.AddBox(box.name, box.size, box.X_WB);
+    if (!(box.probability > 0.0 && box.probability <= 1.0)) {
+      throw std::invalid_argument(name + ": environment box '" + box.name + "' has probability " +
+                                  FormatShort(box.probability) + "; give a probability in (0, 1]");
+    }
+    const int index = world_.AddBox(box.name, box.size, box.X_WB);
+    if (static_cast<int>(geometry_weight_.size()) <= index) geometry_weight_.resize(static_cast<std::size_t>(index) + 1, 1.0);
+    geometry_weight_[static_cast<std::size_t>(index)] = box.probability;
   }
+  geometry_weight_.resize(static_cast<std::size_t>(world_.num_geometries()), 1.0);
   for (const std::string& body : contact_bodies) contact_bodies_.insert(model_->GetBodyIndex(body));
   if (std::isinf(ground_height_)) {
     throw std::invalid_argument(name + ": ground_height is infinite; give a height in metres or NaN for no ground");
@@ -161,9 +168,9 @@ Eigen::MatrixXd CollisionPenalty::GaussNewtonHessian(const Eigen::VectorXd& q_ra
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     Eigen::VectorXd pair_gradient(nv);
-    for (const auto& [pair, margin] : Pairs(q, &data)) {
-      world_.DistanceGradient(*model_, data, pair, pair_gradient);
-      rows.push_back(pair_gradient);
+    for (const WeightedPair& p : Pairs(q, &data)) {
+      world_.DistanceGradient(*model_, data, p.pair, pair_gradient);
+      rows.push_back(std::sqrt(p.weight) * pair_gradient);
     }
   }
   for (const GroundPoint& point : ground_points_) {
@@ -247,23 +254,24 @@ Eigen::VectorXd CollisionPenalty::Configuration(const Eigen::Ref<const Eigen::Ve
   return chart_.Normalized(q);
 }
 
-std::vector<std::pair<multibody::CollisionPair, double>> CollisionPenalty::Pairs(const Eigen::VectorXd& q,
-                                                                                 multibody::Data* data,
-                                                                                 double scale) const {
+std::vector<CollisionPenalty::WeightedPair> CollisionPenalty::Pairs(const Eigen::VectorXd& q, multibody::Data* data,
+                                                                   double scale) const {
   multibody::ForwardKinematics(*model_, *data, q);
   world_.UpdatePoses(*model_, *data);
-  std::vector<std::pair<multibody::CollisionPair, double>> kept;
+  std::vector<WeightedPair> kept;
   for (const multibody::CollisionPair& pair : world_.PairsWithin(scale * std::max(d_safe_, self_margin_))) {
     const bool a_env = world_.geometry_body(pair.geometry_a) < 0, b_env = world_.geometry_body(pair.geometry_b) < 0;
     double margin = self_margin_;
+    double weight = 1.0;
     if (a_env != b_env) {
       const int robot = world_.geometry_body(a_env ? pair.geometry_b : pair.geometry_a);
       if (contact_bodies_.count(robot) != 0) continue;
       margin = d_safe_;
+      weight = geometry_weight_[static_cast<std::size_t>(a_env ? pair.geometry_a : pair.geometry_b)];
     } else if (self_margin_ <= 0.0 || self_box_pairs_.count({pair.geometry_a, pair.geometry_b}) != 0) {
       continue;
     }
-    if (pair.result.distance < scale * margin) kept.emplace_back(pair, margin);
+    if (pair.result.distance < scale * margin) kept.push_back({pair, margin, weight});
   }
   return kept;
 }
@@ -273,7 +281,7 @@ std::vector<multibody::CollisionPair> CollisionPenalty::PairsWithinMargin(const 
   multibody::Data data(*model_);
   const std::lock_guard<std::mutex> lock(mutex_);
   std::vector<multibody::CollisionPair> out;
-  for (const auto& [pair, margin] : Pairs(q, &data)) out.push_back(pair);
+  for (const WeightedPair& p : Pairs(q, &data)) out.push_back(p.pair);
   return out;
 }
 
@@ -284,7 +292,8 @@ double CollisionPenalty::MinimumEnvironmentDistance(const Eigen::Ref<const Eigen
   const std::lock_guard<std::mutex> lock(mutex_);
   double best = std::numeric_limits<double>::infinity();
   if (which != nullptr) which->clear();
-  for (const auto& [pair, margin] : Pairs(q, &data, 10.0)) {
+  for (const WeightedPair& p : Pairs(q, &data, 10.0)) {
+    const multibody::CollisionPair& pair = p.pair;
     const bool a_env = world_.geometry_body(pair.geometry_a) < 0, b_env = world_.geometry_body(pair.geometry_b) < 0;
     if (a_env == b_env || pair.result.distance >= best) continue;
     best = pair.result.distance;
@@ -304,9 +313,9 @@ void CollisionPenalty::DoEval(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen:
   multibody::Data data(*model_);
   const std::lock_guard<std::mutex> lock(mutex_);
   double sum = 0.0;
-  for (const auto& [pair, margin] : Pairs(q, &data)) {
-    const double h = margin - pair.result.distance;
-    sum += h * h;
+  for (const WeightedPair& p : Pairs(q, &data)) {
+    const double h = p.margin - p.pair.result.distance;
+    sum += p.weight * h * h;
   }
   y(0) = sum + GroundPenalty(data, nullptr);
 }
@@ -322,11 +331,11 @@ void CollisionPenalty::DoEvalWithJacobian(const Eigen::Ref<const Eigen::VectorXd
   double sum = 0.0;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    for (const auto& [pair, margin] : Pairs(q, &data)) {
-      const double h = margin - pair.result.distance;
-      sum += h * h;
-      world_.DistanceGradient(*model_, data, pair, pair_gradient);
-      gradient_v -= 2.0 * h * pair_gradient;
+    for (const WeightedPair& p : Pairs(q, &data)) {
+      const double h = p.margin - p.pair.result.distance;
+      sum += p.weight * h * h;
+      world_.DistanceGradient(*model_, data, p.pair, pair_gradient);
+      gradient_v -= 2.0 * p.weight * h * pair_gradient;
     }
   }
   sum += GroundPenalty(data, &gradient_v);

@@ -23,10 +23,15 @@ struct EnvironmentBox {
   std::string name;                                   ///< unique among the environment's boxes
   Eigen::Vector3d size{Eigen::Vector3d::Zero()};      ///< full side lengths, m (each > 0)
   multibody::Pose X_WB;                               ///< pose of the box centre
+  /// Probability that the box is there, in (0, 1]: 1 for a certain obstacle, an occupancy cell's probability for
+  /// perceived space (EnvironmentFromTerrain). The penalty of a pair with this box is weighted by it, so the
+  /// collision term is the expected hinge penalty under the occupancy grid's independent cells.
+  double probability{1.0};
 };
 
 /// The hinge collision penalty of one configuration (thesis f_collision in eq. 2.9a, trajopt's discrete
-/// collision cost): sum over pairs of (m - d)_+^2, where d is the signed distance and m the pair's margin:
+/// collision cost): sum over pairs of w (m - d)_+^2, where d is the signed distance, w the environment box's
+/// probability (1 between robot geometries and for certain boxes) and m the pair's margin:
 /// d_safe between a robot geometry and an environment box, `self_margin` between two robot geometries that
 /// CollisionWorld checks (not the same or adjacent bodies, and not two boxes: a box pair's distance has no
 /// gradient where faces are parallel, which stalls the solver). Geometries of `contact_bodies` are not checked
@@ -91,9 +96,14 @@ class CollisionPenalty final : public optimization::Evaluator {
                      Eigen::Ref<Eigen::VectorXd> hessian_values) const override;
 
   Eigen::VectorXd Configuration(const Eigen::Ref<const Eigen::VectorXd>& x) const;
-  // Checked pairs closer than their margin (times `scale`), with that margin.
-  std::vector<std::pair<multibody::CollisionPair, double>> Pairs(const Eigen::VectorXd& q, multibody::Data* data,
-                                                                 double scale = 1.0) const;
+  // A checked pair closer than its margin, with that margin and its weight (the environment box's probability).
+  struct WeightedPair {
+    multibody::CollisionPair pair;
+    double margin;
+    double weight;
+  };
+  // Checked pairs closer than their margin (times `scale`).
+  std::vector<WeightedPair> Pairs(const Eigen::VectorXd& q, multibody::Data* data, double scale = 1.0) const;
 
   // A support point of a robot shape for the ground term: body, position in the body, radius, geometry name.
   struct GroundPoint {
@@ -123,6 +133,7 @@ class CollisionPenalty final : public optimization::Evaluator {
   CollisionHessian hessian_;
   std::set<int> contact_bodies_;
   std::set<std::pair<int, int>> self_box_pairs_;  // robot box-box pairs, left out (see the class comment)
+  std::vector<double> geometry_weight_;           // per world geometry: 1 for the robot, the box's probability
   mutable std::mutex mutex_;
   mutable multibody::CollisionWorld world_;
 };

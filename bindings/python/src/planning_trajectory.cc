@@ -15,6 +15,7 @@
 #include "system_support.h"
 #include "cairn/multibody/model.h"
 #include "cairn/planning/trajectory/collision_penalty.h"
+#include "cairn/planning/trajectory/environment_from_terrain.h"
 #include "cairn/planning/trajectory/optimize_whole_body_trajectory.h"
 #include "cairn/planning/trajectory/trajectory_optimizer.h"
 #include "cairn/planning/trajectory/trajectory_optimizer_options.h"
@@ -36,9 +37,13 @@ void DefinePlanningTrajectory(py::module_ m) {
            py::arg("name"), py::arg("size"), py::arg("center"), "An axis-aligned box (full side lengths, m).")
       .def_readwrite("name", &EnvironmentBox::name, "Unique name.")
       .def_readwrite("size", &EnvironmentBox::size, "Full side lengths, m.")
+      .def_readwrite("probability", &EnvironmentBox::probability,
+                     "Probability that the box is there, in (0, 1]; weighs its collision penalty.")
       .def_property_readonly(
           "center", [](const EnvironmentBox& box) { return Eigen::Vector3d(box.X_WB.translation()); },
           "Centre, m.");
+  m.def("EnvironmentFromTerrain", &EnvironmentFromTerrain, py::arg("terrain"),
+        "The terrain's obstacles (probability 1) and occupied voxels (their probability) as EnvironmentBoxes.");
 
   py::class_<TrajectoryOptimizerOptions>(m, "TrajectoryOptimizerOptions", "Parameters of problem (2.9).")
       .def(py::init<>(), "The thesis' values (alpha = 50, d_safe = 2.5 cm), Ipopt.")

@@ -69,3 +69,13 @@ def test_voxels_and_the_planners_free_probability_level():
         terrain.SetOccupiedVoxels(np.zeros((1, 3)), np.array([1.0]), 0.05)
     options = planning.FootstepPlannerOptions()
     assert options.min_body_free_probability == pytest.approx(0.9)
+
+
+def test_environment_from_terrain_weighs_voxels_by_probability():
+    terrain = planning.TerrainMap(np.array([0.0, 0.0]), 10, 10, 0.05)
+    terrain.AddObstacle(planning.TerrainMap.Obstacle("crate", np.array([0.2, 0.2, 0.1]), np.array([0.05, 0.05, 0.1])))
+    terrain.SetOccupiedVoxels(np.array([[0.3, 0.3, 0.6]]), np.array([0.7]), 0.05)
+    boxes = planning.EnvironmentFromTerrain(terrain)
+    assert [b.name for b in boxes] == ["crate", "voxel 0"]
+    assert boxes[0].probability == 1.0 and boxes[1].probability == pytest.approx(0.7)
+    np.testing.assert_allclose(boxes[1].size, [0.05, 0.05, 0.05])

@@ -13,6 +13,7 @@
 #include <cairn/planning/trajectory/center_of_mass_projection.h>
 #include <cairn/planning/trajectory/collision_penalty.h>
 #include <cairn/planning/trajectory/configuration_chart.h>
+#include <cairn/planning/trajectory/environment_from_terrain.h>
 #include <cairn/planning/trajectory/frame_pose_error.h>
 #include <cairn/planning/trajectory/quaternion_norm_error.h>
 #include <cairn/planning/trajectory/static_torque_residual.h>
@@ -195,6 +196,41 @@ TEST(CollisionPenaltyTest, PenalisesABarAtTheHeadWithAnExactGradient) {
   Eigen::VectorXd away = q;
   away(0) += 3.0;
   EXPECT_EQ(penalty.Eval(away)(0), 0.0);
+}
+
+// Perceived space: a box that is there with probability p weighs its hinge by p, and the terrain's voxels become
+// such boxes.
+TEST(CollisionPenaltyTest, WeighsUncertainBoxesByTheirProbability) {
+  const auto model = Humanoid();
+  const Eigen::VectorXd q = test::BentKneePosture(*model);
+  multibody::Data data(*model);
+  multibody::ForwardKinematics(*model, data, q);
+  const Eigen::Vector3d head = data.X_world[static_cast<std::size_t>(model->GetBodyIndex("head"))].translation();
+  EnvironmentBox bar{"bar", Eigen::Vector3d(0.1, 2.0, 0.1),
+                     multibody::Pose(Eigen::Matrix3d::Identity(), head + Eigen::Vector3d(0.0, 0, 0.06 + 0.1 + 0.01 + 0.05))};
+  const CollisionPenalty certain("collision", model, {bar}, {"l_foot", "r_foot"}, 0.025, 0.01);
+  bar.probability = 0.4;
+  const CollisionPenalty uncertain("collision", model, {bar}, {"l_foot", "r_foot"}, 0.025, 0.01);
+  EXPECT_NEAR(uncertain.Eval(q)(0), 0.4 * certain.Eval(q)(0), 1e-15);
+  Eigen::VectorXd perturbed = q;
+  perturbed(model->joint(model->GetJointIndex("neck_pitch")).idx_q) = 0.1;
+  const auto check = CheckGradients(uncertain, perturbed, 1e-6);
+  EXPECT_TRUE(check.passed) << check.ToString();
+  bar.probability = 0.0;
+  CAIRN_EXPECT_THROWS_WITH(CollisionPenalty("collision", model, {bar}, {}, 0.025, 0.01), std::invalid_argument,
+                           "environment box 'bar' has probability 0; give a probability in (0, 1]");
+
+  TerrainMap terrain(Eigen::Vector2d(0.0, 0.0), 10, 10, 0.05);
+  terrain.AddObstacle({"crate", Eigen::Vector3d(0.2, 0.2, 0.1), Eigen::Vector3d(0.05, 0.05, 0.1), 0.0});
+  terrain.SetOccupiedVoxels({{Eigen::Vector3d(0.3, 0.3, 0.6), 0.7}, {Eigen::Vector3d(0.35, 0.3, 0.6), 0.55}}, 0.05);
+  const std::vector<EnvironmentBox> environment = EnvironmentFromTerrain(terrain);
+  ASSERT_EQ(environment.size(), 3u);
+  EXPECT_EQ(environment[0].name, "crate");
+  EXPECT_EQ(environment[0].probability, 1.0);
+  EXPECT_EQ(environment[2].name, "voxel 1");
+  EXPECT_EQ(environment[2].size, Eigen::Vector3d::Constant(0.05));
+  EXPECT_EQ(environment[2].X_WB.translation(), Eigen::Vector3d(0.35, 0.3, 0.6));
+  EXPECT_DOUBLE_EQ(environment[2].probability, 0.55);
 }
 
 // With one pair in its margin the penalty is f = h^2 with gradient -2 h J, so its Gauss-Newton Hessian 2 J'J is
