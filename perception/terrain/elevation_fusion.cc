@@ -8,9 +8,20 @@
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/parallel_for.h"
+#include "cairn/perception/terrain/internal/parallel_bands.h"
 #include "cairn/perception/terrain/kalman_cell_update.h"
 
 namespace cairn::perception {
+
+namespace {
+
+// Named once: a temporary std::string of this length would be a heap allocation on every update.
+const std::string& VarianceLayerName() {
+  static const std::string name = "elevation_variance";
+  return name;
+}
+
+}  // namespace
 
 ElevationFusion::ElevationFusion(const Options& options) : options_(options) {
   options.noise.Validate();
@@ -39,7 +50,7 @@ const ElevationFusion::Stats& ElevationFusion::Integrate(const Eigen::Matrix3Xd&
     throw std::invalid_argument("ElevationFusion: the sensor position must be finite");
   }
   const int elevation = map->LayerIndex("elevation");
-  const int variance_layer = map->LayerIndex("elevation_variance");
+  const int variance_layer = map->LayerIndex(VarianceLayerName());
   const int n = static_cast<int>(points_W.cols());
   if (static_cast<int>(cell_of_point_.size()) < n) {
     cell_of_point_.resize(n);
@@ -51,7 +62,7 @@ const ElevationFusion::Stats& ElevationFusion::Integrate(const Eigen::Matrix3Xd&
   const double max_range = options_.max_range;
   const RangeVarianceModel noise = options_.noise;
   // Pass 1: each point's cell and measurement variance.
-  ParallelForBands(n, bands, threads_, [&](int band, int begin, int end) {
+  internal::ParallelBands(n, bands, threads_, [&](int band, int begin, int end) {
     std::int64_t outside = 0, rejected = 0, fused = 0;
     for (int k = begin; k < end; ++k) {
       const Eigen::Vector3d p = points_W.col(k);
@@ -80,7 +91,7 @@ const ElevationFusion::Stats& ElevationFusion::Integrate(const Eigen::Matrix3Xd&
   auto& var = map->layer_data(variance_layer);
   const int rows = map->size().x();
   const int columns = map->size().y();
-  ParallelForBands(rows, bands, threads_, [&](int, int row_begin, int row_end) {
+  internal::ParallelBands(rows, bands, threads_, [&](int, int row_begin, int row_end) {
     const int lo = row_begin * columns;
     const int hi = row_end * columns;
     for (int k = 0; k < n; ++k) {

@@ -7,6 +7,7 @@
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/parallel_for.h"
+#include "cairn/perception/terrain/internal/parallel_bands.h"
 #include "cairn/perception/terrain/semantic_fusion.h"
 
 namespace cairn::perception {
@@ -52,6 +53,7 @@ HierarchicalTraversability::HierarchicalTraversability(const Options& options) :
                                 " m must be positive and finite");
   }
   threads_ = ResolveThreadCount(options.num_threads);
+  for (const auto& c : classes) layer_names_.push_back(SemanticFusion::LayerName(c.name));
 }
 
 double HierarchicalTraversability::CellValue(double collapsibility, const double* semantic, double slope,
@@ -88,7 +90,7 @@ void HierarchicalTraversability::Compute(GridMap* map) const {
   const std::vector<double>* semantic[kMaxClasses] = {};
   bool any_semantic = false;
   for (int c = 0; c < k; ++c) {
-    const std::string name = SemanticFusion::LayerName(options_.semantic_values[c].name);
+    const std::string& name = layer_names_[c];
     if (map->HasLayer(name)) {
       semantic[c] = &map->layer_data(map->LayerIndex(name));
       any_semantic = true;
@@ -96,7 +98,7 @@ void HierarchicalTraversability::Compute(GridMap* map) const {
   }
   std::vector<double>& t = map->layer_data(out);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  ParallelFor(static_cast<int>(map->num_cells()), threads_, [&](int, int begin, int end) {
+  internal::ParallelBands(static_cast<int>(map->num_cells()), threads_, threads_, [&](int, int begin, int end) {
     double probabilities[kMaxClasses];
     for (int s = begin; s < end; ++s) {
       for (int c = 0; c < k; ++c) probabilities[c] = semantic[c] != nullptr ? (*semantic[c])[s] : nan;

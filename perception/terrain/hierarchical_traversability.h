@@ -62,6 +62,7 @@ class HierarchicalTraversability {
 
  private:
   Options options_;
+  std::vector<std::string> layer_names_;  // "semantic_<class>", named once
   int threads_{1};
 };
 

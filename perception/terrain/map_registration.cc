@@ -5,6 +5,7 @@
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/parallel_for.h"
+#include "cairn/perception/terrain/internal/parallel_bands.h"
 #include "cairn/perception/terrain/kalman_cell_update.h"
 
 namespace cairn::perception {
@@ -25,6 +26,7 @@ MapRegistration::MapRegistration(std::vector<Layer> layers, int num_threads) : l
     }
   }
   threads_ = ResolveThreadCount(num_threads);
+  for (const auto& l : layers_) variance_names_.push_back(l.global_layer + "_variance");
 }
 
 void MapRegistration::AddLayers(GridMap* global) const {
@@ -35,16 +37,17 @@ void MapRegistration::AddLayers(GridMap* global) const {
 }
 
 void MapRegistration::Register(const GridMap& local, GridMap* global) const {
-  for (const auto& l : layers_) {
+  for (std::size_t index = 0; index < layers_.size(); ++index) {
+    const Layer& l = layers_[index];
     const int src = local.LayerIndex(l.local_layer);
     const int src_var = l.variance_layer.empty() ? -1 : local.LayerIndex(l.variance_layer);
     const std::vector<double>& values = local.layer_data(src);
     const std::vector<double>* variances = src_var >= 0 ? &local.layer_data(src_var) : nullptr;
     std::vector<double>& mean = global->layer_data(global->LayerIndex(l.global_layer));
-    std::vector<double>& var = global->layer_data(global->LayerIndex(l.global_layer + "_variance"));
+    std::vector<double>& var = global->layer_data(global->LayerIndex(variance_names_[index]));
     const double constant = l.variance;
     const GridMap& g = *global;
-    ParallelFor(g.size().x(), threads_, [&](int, int begin, int end) {
+    internal::ParallelBands(g.size().x(), threads_, threads_, [&](int, int begin, int end) {
       for (int i = begin; i < end; ++i) {
         for (int j = 0; j < g.size().y(); ++j) {
           Eigen::Vector2i cell;

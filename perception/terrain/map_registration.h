@@ -44,6 +44,7 @@ class MapRegistration {
 
  private:
   std::vector<Layer> layers_;
+  std::vector<std::string> variance_names_;  // "<global>_variance", named once
   int threads_{1};
 };
 

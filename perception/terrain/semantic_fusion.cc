@@ -6,6 +6,7 @@
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/parallel_for.h"
+#include "cairn/perception/terrain/internal/parallel_bands.h"
 #include "cairn/perception/terrain/kalman_cell_update.h"
 
 namespace cairn::perception {
@@ -30,6 +31,10 @@ SemanticFusion::SemanticFusion(const Options& options) : options_(options) {
                                 " must be positive and finite (e.g. 0.04)");
   }
   threads_ = ResolveThreadCount(options.num_threads);
+  for (const auto& c : options.classes) {
+    layer_names_.push_back(LayerName(c));
+    variance_names_.push_back(LayerName(c) + "_variance");
+  }
 }
 
 void SemanticFusion::AddLayers(GridMap* map) const {
@@ -71,10 +76,10 @@ void SemanticFusion::Integrate(const Eigen::Matrix3Xd& points_W, const Eigen::Ma
   int layer_index[kMaxClasses];
   int variance_index[kMaxClasses];
   for (int c = 0; c < k; ++c) {
-    layer_index[c] = map->LayerIndex(LayerName(options_.classes[c]));
-    variance_index[c] = map->LayerIndex(LayerName(options_.classes[c]) + "_variance");
+    layer_index[c] = map->LayerIndex(layer_names_[c]);
+    variance_index[c] = map->LayerIndex(variance_names_[c]);
   }
-  ParallelFor(n, threads_, [&](int, int begin, int end) {
+  internal::ParallelBands(n, threads_, threads_, [&](int, int begin, int end) {
     for (int p = begin; p < end; ++p) {
       Eigen::Vector2i cell;
       cell_of_point_[p] = points_W.col(p).allFinite() && map->CellOf(points_W.col(p).head<2>(), &cell)
@@ -84,7 +89,7 @@ void SemanticFusion::Integrate(const Eigen::Matrix3Xd& points_W, const Eigen::Ma
   });
   const int columns = map->size().y();
   const double var_m = options_.measurement_variance;
-  ParallelFor(map->size().x(), threads_, [&](int, int row_begin, int row_end) {
+  internal::ParallelBands(map->size().x(), threads_, threads_, [&](int, int row_begin, int row_end) {
     const int lo = row_begin * columns;
     const int hi = row_end * columns;
     std::fill(counts_.begin() + lo, counts_.begin() + hi, 0);

@@ -56,6 +56,8 @@ class SemanticFusion {
  private:
   Options options_;
   int threads_{1};
+  std::vector<std::string> layer_names_;
+  std::vector<std::string> variance_names_;
   std::vector<int> cell_of_point_;
   std::vector<double> sums_;  // cells x classes
   std::vector<int> counts_;

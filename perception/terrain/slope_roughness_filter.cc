@@ -9,6 +9,7 @@
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/parallel_for.h"
+#include "cairn/perception/terrain/internal/parallel_bands.h"
 
 namespace cairn::perception {
 
@@ -41,7 +42,7 @@ void SlopeRoughnessFilter::Compute(GridMap* map, const std::string& elevation_la
   const int min_valid = options_.min_valid_cells;
   const double res = m.resolution();
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  ParallelFor(nx, threads_, [&](int, int begin, int end) {
+  internal::ParallelBands(nx, threads_, threads_, [&](int, int begin, int end) {
     for (int i = begin; i < end; ++i) {
       for (int j = 0; j < ny; ++j) {
         const int s = m.StorageIndex(i, j);
