@@ -35,9 +35,9 @@ ProbingPlanner::ProbingPlanner(const Options& options) : options_(options) {
   for (const auto& [name, value] : {std::pair<const char*, double>{"cluster_distance", options.cluster_distance},
                                     {"candidate_spacing", options.candidate_spacing},
                                     {"reach", options.reach}}) {
-    if (!(value > 0.0) || !std::isfinite(value)) {
+    if (!(value >= 1e-6 && value <= 1e6)) {
       throw std::invalid_argument(std::string("ProbingPlanner: ") + name + " " + FormatShort(value) +
-                                  " m must be positive and finite");
+                                  " m must be in [1e-6, 1e6]");
     }
   }
   if (options.min_cluster_points < 1) {
@@ -64,8 +64,10 @@ std::vector<ProbingPlanner::Cluster> ProbingPlanner::FindClusters(const Eigen::M
   }
   const int n = static_cast<int>(points.cols());
   for (int k = 0; k < n; ++k) {
-    if (!points.col(k).allFinite()) {
-      throw std::invalid_argument("ProbingPlanner: point " + FormatShort(k) + " is not finite");
+    if (!points.col(k).allFinite() || points.col(k).cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      throw std::invalid_argument("ProbingPlanner: point " + FormatShort(k) + " (" + FormatShort(points(0, k)) + ", " +
+                                  FormatShort(points(1, k)) + ") must be finite and within +-" +
+                                  FormatShort(kMaxCoordinate) + " m");
     }
   }
   std::map<Key, std::vector<int>> buckets;
@@ -123,6 +125,11 @@ int ProbingPlanner::TouchingProbe(const Cluster& cluster, const Eigen::Matrix2Xd
   const double d2 = options_.cluster_distance * options_.cluster_distance;
   int found = -1;
   for (int k : cluster.members) {
+    if (k < 0 || k >= points.cols()) {
+      throw std::invalid_argument("ProbingPlanner: cluster member " + FormatShort(k) + " is not a column of the " +
+                                  FormatShort(static_cast<long>(points.cols())) +
+                                  " points given (pass the points the cluster was found in)");
+    }
     const Eigen::Vector2d p = points.col(k);
     const Key key = BucketOf(p);
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
@@ -171,13 +178,16 @@ void ProbingPlanner::RecordProbe(const Cluster& cluster, const Eigen::Matrix2Xd&
     throw std::invalid_argument("ProbingPlanner: collapsibility " + FormatShort(collapsibility) +
                                 " must be in [0, 1] (eq. 5)");
   }
+  for (int k : cluster.members) {
+    if (k < 0 || k >= points.cols() || !points.col(k).allFinite() ||
+        points.col(k).cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      throw std::invalid_argument("ProbingPlanner: cluster member " + FormatShort(k) +
+                                  " is not a finite point of the points given (within +-1e6 m)");
+    }
+  }
   const int index = static_cast<int>(probes_.size());
   probes_.push_back(Probe{cluster.label, target, collapsibility});
   for (int k : cluster.members) {
-    if (k < 0 || k >= points.cols()) {
-      throw std::invalid_argument("ProbingPlanner: cluster member " + FormatShort(k) +
-                                  " is not a column of the points given");
-    }
     probed_points_[BucketOf(points.col(k))].emplace_back(points.col(k), index);
   }
 }

@@ -25,6 +25,8 @@ class ProbingPlanner {
  public:
   /// Most points one call may hold.
   static constexpr int kMaxPoints = 1 << 22;
+  /// Largest |coordinate| of a point, m (so that bucket indices stay exact).
+  static constexpr double kMaxCoordinate = 1e6;
 
   struct Options {
     /// Points of one class closer than this (m) belong to one cluster.
@@ -67,18 +69,20 @@ class ProbingPlanner {
     double collapsibility{0.0};
   };
 
-  /// Throws std::invalid_argument for non-positive or non-finite distances or a minimum cluster size below 1.
+  /// Throws std::invalid_argument for distances that are not finite or not in [1e-6, 1e6] m, or a minimum cluster
+  /// size below 1.
   explicit ProbingPlanner(const Options& options);
   ProbingPlanner() : ProbingPlanner(Options{}) {}
 
   const Options& options() const { return options_; }
 
   /// Clusters `points` (2 x N, world x-y) by class `labels` (N values; negative = not questionable, skipped).
-  /// Throws std::invalid_argument for mismatched sizes, more than kMaxPoints points or a non-finite point.
+  /// Throws std::invalid_argument for mismatched sizes, more than kMaxPoints points, or a point that is not
+  /// finite or beyond kMaxCoordinate.
   std::vector<Cluster> FindClusters(const Eigen::Matrix2Xd& points, const std::vector<int>& labels) const;
 
   /// The recorded probe a cluster grows out of (same class, a point within cluster_distance of the probed
-  /// cluster's points), or -1.
+  /// cluster's points), or -1. Throws std::invalid_argument for a member that is not a column of `points`.
   int TouchingProbe(const Cluster& cluster, const Eigen::Matrix2Xd& points) const;
 
   /// The nearest candidate of the clusters big enough and not touching a recorded probe, seen from `robot`.
@@ -86,7 +90,8 @@ class ProbingPlanner {
                   const Eigen::Vector2d& robot) const;
 
   /// Records the probe of `cluster` at `target` with collapsibility `collapsibility` (in [0, 1]; throws
-  /// std::invalid_argument otherwise); its points then absorb the clusters that grow out of it.
+  /// std::invalid_argument otherwise, and for a member that is not a column of `points` or a point that
+  /// FindClusters would refuse); its points then absorb the clusters that grow out of it.
   void RecordProbe(const Cluster& cluster, const Eigen::Matrix2Xd& points, const Eigen::Vector2d& target,
                    double collapsibility);
 

@@ -79,7 +79,13 @@ TEST(ProbingPlannerTest, RejectsBadInput) {
   CAIRN_EXPECT_THROWS_WITH(planner.FindClusters(Eigen::Matrix2Xd::Zero(2, 3), {0, 0}), std::invalid_argument,
                            "2 labels for 3 points");
   CAIRN_EXPECT_THROWS_WITH(ProbingPlanner(ProbingPlanner::Options{0.1, 0.3, -1.0, 3}), std::invalid_argument,
-                           "reach -1 m");
+                           "reach -1 m must be in [1e-6, 1e6]");
+  CAIRN_EXPECT_THROWS_WITH(planner.FindClusters(Eigen::Matrix2Xd::Constant(2, 1, 1e300), {0}), std::invalid_argument,
+                           "point 0 (1e+300, 1e+300) must be finite and within +-1e+06 m");
+  ProbingPlanner::Cluster stray;
+  stray.members = {5};
+  CAIRN_EXPECT_THROWS_WITH(planner.TouchingProbe(stray, Eigen::Matrix2Xd::Zero(2, 1)), std::invalid_argument,
+                           "cluster member 5 is not a column of the 1 points");
   ProbingPlanner::Cluster c;
   CAIRN_EXPECT_THROWS_WITH(planner.RecordProbe(c, Eigen::Matrix2Xd::Zero(2, 1), Eigen::Vector2d::Zero(), 1.5),
                            std::invalid_argument, "collapsibility 1.5");
