@@ -16,6 +16,7 @@ void RegisterFrictionDatasetCommand(CommandRegistry* registry);
 void RegisterPlanCommand(CommandRegistry* registry);
 void RegisterSimulateCommand(CommandRegistry* registry);
 void RegisterOracleCommand(CommandRegistry* registry);
+void RegisterTraverseCommand(CommandRegistry* registry);
 
 void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPendulumCommand(registry);
@@ -29,6 +30,7 @@ void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPlanCommand(registry);
   RegisterSimulateCommand(registry);
   RegisterOracleCommand(registry);
+  RegisterTraverseCommand(registry);
 }
 
 }  // namespace cairn::cli

@@ -29,8 +29,13 @@ void DefinePerceptionStereoOccupancy(py::module_ m);
 void DefinePerceptionFriction(py::module_ m);
 /// cairn.perception: synthetic scenes and evaluation (Middlebury, scores).
 void DefinePerceptionSyntheticEvaluation(py::module_ m);
+/// cairn.perception: terrain (seed 001) maps, fusion, traversability and their systems.
+void DefinePerceptionTerrain(py::module_ m);
 /// cairn.planning.
 void DefinePlanning(py::module_ m);
+/// cairn.planning, grid part: grid search, probing planner, GridPathPlanner, traverse scenario (after
+/// DefinePerceptionTerrain: results hold a GridMap).
+void DefinePlanningGrid(py::module_ m);
 /// cairn.planning, whole-body part: TrajectoryOptimizer and OptimizeWholeBodyTrajectory (after DefinePlanning).
 void DefinePlanningTrajectory(py::module_ m);
 void DefinePlanningTerrain(py::module_ m);

@@ -24,10 +24,12 @@ PYBIND11_MODULE(_cairn, m) {
   cairn::python::DefinePerceptionStereoOccupancy(perception);
   cairn::python::DefinePerceptionFriction(perception);
   cairn::python::DefinePerceptionSyntheticEvaluation(perception);
+  cairn::python::DefinePerceptionTerrain(perception);
   py::module_ planning = m.def_submodule("planning", "Footstep planning and locomotion: cairn::planning.");
   cairn::python::DefinePlanning(planning);
   cairn::python::DefinePlanningTrajectory(planning);
   cairn::python::DefinePlanningTerrain(planning);
+  cairn::python::DefinePlanningGrid(planning);
   cairn::python::DefineExamples(m.def_submodule("examples", "The example systems of examples/systems."));
   cairn::python::FixDynamicAttributeTraversal(m);
 }

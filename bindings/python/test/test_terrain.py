@@ -1,0 +1,110 @@
+"""cairn.perception terrain (seed 001) and cairn.planning grid: maps, Algorithm 1, searches, probing, systems."""
+
+import math
+
+import numpy as np
+import pytest
+
+import cairn.perception as perception
+import cairn.planning as planning
+from cairn.systems import Simulator
+from conftest import source_path
+
+SCENARIO = source_path("examples", "scenarios", "traverse", "plants_and_water.yaml")
+
+
+def test_grid_map_moves_without_copying():
+    grid = perception.GridMap([8, 6], 1.0, [0.0, 0.0])
+    grid.AddLayer("id")
+    values = np.arange(48, dtype=float).reshape(8, 6)
+    grid.SetLayer("id", values)
+    assert grid.CellOf([-3.5, -2.5]) == (0, 0)
+    assert grid.CellOf([10.0, 0.0]) is None
+    shift = grid.Move([2.0, 0.0])
+    assert list(shift) == [2, 0]
+    moved = grid.Layer("id")
+    np.testing.assert_array_equal(moved[:6], values[2:])  # kept cells at their world positions
+    assert np.isnan(moved[6:]).all()  # entering cells cleared
+    with pytest.raises(ValueError, match="no layer named 'slope'"):
+        grid.Layer("slope")
+
+
+def test_kalman_plane_and_algorithm_one():
+    mean, var = float("nan"), float("nan")
+    for z in [0.1, 0.3]:
+        mean, var = perception.KalmanCellUpdate(z, 0.04, mean, var)
+    assert mean == pytest.approx(0.2) and var == pytest.approx(0.02)
+    grid = perception.GridMap([20, 20], 0.05, [0.0, 0.0])
+    perception.ElevationFusion.AddLayers(grid)
+    xs = np.array([grid.CellCenter([i, j]) for i in range(20) for j in range(20)])
+    points = np.vstack([xs.T, 0.2 * xs[:, 0]])
+    stats = perception.ElevationFusion().Integrate(points, [0.0, 0.0, 1.0], grid)
+    assert stats.fused == 400
+    perception.SlopeRoughnessFilter().Compute(grid)
+    assert grid.at("slope", 10, 10) == pytest.approx(math.atan(0.2))
+    assert grid.at("roughness", 10, 10) == pytest.approx(0.0, abs=1e-9)
+    rule = perception.HierarchicalTraversability()
+    assert rule.CellValue(0.9, [1.0, 0.0], 0.0, 0.0) == pytest.approx(0.1)  # collapsibility first
+    assert rule.CellValue(float("nan"), [0.9, 0.6], 0.0, 0.0) == 0.8  # then plants
+    assert rule.CellValue(float("nan"), [0.1, 0.7], 0.0, 0.0) == 0.3  # water
+    assert rule.CellValue(float("nan"), [], 0.6, 0.0) == 0.0  # too steep
+    assert perception.ClassifyTraversability(0.8) == perception.TraversabilityClass.kSemiTraversable
+    assert perception.CollapsibilityEstimator.FromForce(30.0, 100.0) == pytest.approx(0.7)
+
+
+def test_grid_search_and_probing_planner():
+    values = np.ones((5, 3))
+    values[2, 1] = 0.0
+    grid = planning.TraversabilityGrid(values, 1.0, [0.0, 0.0])
+    for algorithm in (planning.GridSearch.Algorithm.kDijkstra, planning.GridSearch.Algorithm.kAStar):
+        options = planning.GridSearch.Options()
+        options.algorithm = algorithm
+        path = planning.GridSearch(options).Plan(grid, [0, 1], [4, 1])
+        assert path.found and all(list(c) != [2, 1] for c in path.cells)
+        assert path.cost == pytest.approx(2.0 + 2.0 * math.sqrt(2.0))
+    points = np.array([[1.0 + 0.05 * k for k in range(10)], [0.0] * 10])
+    prober = planning.ProbingPlanner()
+    clusters = prober.FindClusters(points, [0] * 10)
+    assert len(clusters) == 1
+    decision = prober.Decide(clusters, points, [0.5, 0.0])
+    assert decision.action == planning.ProbingPlanner.Decision.Action.kProbe
+
+
+def test_systems_in_a_simulator():
+    mapper = perception.ElevationMapper(perception.GridMap([10, 10], 0.1, [0.0, 0.0]), 0.1)
+    context = mapper.CreateDefaultContext()
+    xs = np.array([[x, y, 0.0] for x in np.arange(-0.45, 0.5, 0.05) for y in np.arange(-0.45, 0.5, 0.05)]).T
+    mapper.get_points_input_port().FixValue(context, xs)
+    mapper.get_sensor_input_port().FixValue(context, np.array([0.0, 0.0, 1.0]))
+    mapper.get_probabilities_input_port().FixValue(context, np.zeros((2, 0)))
+    simulator = Simulator(mapper, context)
+    simulator.AdvanceTo(0.05)
+    grid = mapper.get_map_output_port().Eval(simulator.get_context())
+    assert grid.at("elevation", 5, 5) == pytest.approx(0.0)
+    analyzer = perception.TraversabilityAnalyzer()
+    ac = analyzer.CreateDefaultContext()
+    analyzer.get_map_input_port().FixValue(ac, grid)
+    analyzer.get_probes_input_port().FixValue(ac, [perception.ProbedRegion([np.array([0.05, 0.05])], 0.75)])
+    raster = analyzer.get_traversability_output_port().Eval(ac)
+    assert raster.shape == (10, 10) and raster[5, 5] == pytest.approx(0.25) and raster[2, 2] == 1.0
+    probe = perception.ProbeController(perception.CollapsibilityEstimator.Options(), 0.01)
+    pc = probe.CreateDefaultContext()
+    probe.get_force_input_port().FixValue(pc, np.array([20.0]))
+    probe.get_probing_input_port().FixValue(pc, np.array([1.0]))
+    sim = Simulator(probe, pc)
+    sim.AdvanceTo(0.035)
+    np.testing.assert_allclose(probe.get_collapsibility_output_port().Eval(sim.get_context()), [0.8, 4.0])
+
+
+def test_traverse_scenario_probes_and_avoids_soft_soil():
+    scenario = planning.TraverseScenario.Load(SCENARIO)
+    result = planning.TraverseSimulation(scenario).Run()
+    assert result.reached_goal, result.failure
+    assert result.collapsible_steps == 0
+    assert [p.region for p in result.probes][:1] == ["soft plants"]
+    assert "hard plants" in result.regions_entered
+    options = planning.TraverseSimulation.Options()
+    options.probing = False
+    blind = planning.TraverseSimulation(scenario, options).Run()
+    assert blind.collapsible_steps > 0 and "soft plants" in blind.regions_entered
+    assert blind.map.Layer("traversability").shape == (100, 100)

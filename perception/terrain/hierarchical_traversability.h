@@ -1,0 +1,69 @@
+#pragma once
+
+/// @file
+/// HierarchicalTraversability: Algorithm 1 of seed 001 — collapsibility, else semantics, else geometry.
+
+#include <string>
+#include <vector>
+
+#include "cairn/perception/terrain/grid_map.h"
+
+namespace cairn::perception {
+
+/// The traversability t in [0, 1] of every cell by seed 001's hierarchical rule (Algorithm 1):
+///   1. collapsibility C known (layer "collapsibility" not NaN) → t = 1 − C;
+///   2. else, a semantic class present (layer "semantic_<class>" at least semantic_threshold; the most probable
+///      class if several) → that class's fixed value (plants 0.8, water 0.3 in the paper);
+///   3. else geometry: t = 1 − w_s · slope / slope_crit − w_r · roughness / roughness_crit, clamped to [0, 1];
+///      a slope or roughness at or above its critical value makes the cell untraversable (t = 0) whatever the
+///      other, as in Wermelinger et al. 2016, which the paper follows;
+///   4. else (no geometry either) NaN: unknown.
+/// Missing layers count as unknown everywhere (a map without collapsibility uses steps 2–4).
+class HierarchicalTraversability {
+ public:
+  /// A semantic class and the traversability it gives a cell.
+  struct SemanticValue {
+    std::string name;
+    double traversability{0.0};
+  };
+
+  struct Options {
+    /// The classes and their fixed values (seed 001 §4.1).
+    std::vector<SemanticValue> semantic_values{{"plants", 0.8}, {"water", 0.3}};
+    /// Fused class probability from which a cell counts as of that class.
+    double semantic_threshold{0.5};
+    double slope_weight{0.5};
+    double roughness_weight{0.5};
+    /// Critical slope, rad (30°, a quadruped's usual limit).
+    double critical_slope{0.5235987755982988};
+    /// Critical roughness, m (about half a quadruped's step-height margin).
+    double critical_roughness{0.05};
+    /// Threads (0 = one per core).
+    int num_threads{0};
+  };
+
+  /// Most semantic classes.
+  static constexpr int kMaxClasses = 16;
+
+  /// Throws std::invalid_argument for a class value outside [0, 1], an empty or repeated class, more than
+  /// kMaxClasses, a threshold outside (0, 1], negative or non-finite weights (or both zero), or non-positive
+  /// critical values.
+  explicit HierarchicalTraversability(const Options& options);
+  HierarchicalTraversability() : HierarchicalTraversability(Options{}) {}
+
+  const Options& options() const { return options_; }
+
+  /// The rule for one cell: `semantic` holds the classes' probabilities in the order of semantic_values (NaN =
+  /// unknown), or is null when there are none.
+  double CellValue(double collapsibility, const double* semantic, double slope, double roughness) const;
+
+  /// Writes layer "traversability" of `map` (added if missing) from its layers.
+  void Compute(GridMap* map) const;
+
+ private:
+  Options options_;
+  std::vector<std::string> layer_names_;  // "semantic_<class>", named once
+  int threads_{1};
+};
+
+}  // namespace cairn::perception

@@ -1,0 +1,44 @@
+#include "cairn/perception/terrain/traversability_analyzer.h"
+
+namespace cairn::perception {
+
+TraversabilityAnalyzer::TraversabilityAnalyzer(const HierarchicalTraversability::Options& options) : rule_(options) {
+  const GridMap empty(Eigen::Vector2i(1, 1), 1.0, Eigen::Vector2d::Zero());
+  DeclareAbstractInputPort("map", systems::Value<GridMap>(empty));
+  DeclareAbstractInputPort("probes", systems::Value<std::vector<ProbedRegion>>(std::vector<ProbedRegion>()));
+  DeclareAbstractOutputPort(
+      "map", systems::Value<GridMap>(empty),
+      [this](const systems::Context& c, systems::AbstractValue* v) {
+        CalcMap(get_map_input_port().Eval<GridMap>(c), get_probes_input_port().Eval<std::vector<ProbedRegion>>(c),
+                &v->get_mutable_value<GridMap>());
+      },
+      {all_input_ports_ticket()});
+  DeclareAbstractOutputPort(
+      "traversability", systems::Value<Eigen::MatrixXd>(Eigen::MatrixXd()),
+      [this](const systems::Context& c, systems::AbstractValue* v) {
+        const GridMap& map = get_map_output_port().Eval<GridMap>(c);
+        const int t = map.LayerIndex("traversability");
+        Eigen::MatrixXd& out = v->get_mutable_value<Eigen::MatrixXd>();
+        out.resize(map.size().x(), map.size().y());
+        for (int i = 0; i < map.size().x(); ++i) {
+          for (int j = 0; j < map.size().y(); ++j) out(i, j) = map.at(t, i, j);
+        }
+      },
+      {all_input_ports_ticket()});
+}
+
+void TraversabilityAnalyzer::CalcMap(const GridMap& map, const std::vector<ProbedRegion>& probes,
+                                     GridMap* out) const {
+  *out = map;
+  if (!out->HasLayer("collapsibility")) out->AddLayer("collapsibility");
+  const int c = out->LayerIndex("collapsibility");
+  for (const ProbedRegion& probe : probes) {
+    for (const Eigen::Vector2d& p : probe.points) {
+      Eigen::Vector2i cell;
+      if (out->CellOf(p, &cell)) out->at(c, cell.x(), cell.y()) = probe.collapsibility;
+    }
+  }
+  rule_.Compute(out);
+}
+
+}  // namespace cairn::perception
