@@ -1,0 +1,51 @@
+#pragma once
+
+#include <string>
+
+namespace cairn::planning {
+
+/// Most samples a stabilised trajectory may hold (duration / control_period), checked before allocating.
+inline constexpr long long kMaxStabilizationSamples = 200000;
+
+/// Parameters of interpolation and ZMP stabilisation (thesis 2.5.1c). Defaults: 200 Hz, Hermite, the thesis'
+/// FFT compensation; the preview-control defaults are Kajita 2003's common values.
+struct StabilizerOptions {
+  /// "fft" (the thesis' iterative frequency-domain compensation), "preview" (Kajita's preview control on the
+  /// cart-table model) or "none" (interpolation only).
+  std::string method{"fft"};
+  /// "hermite" (cubic with zero derivatives at the knots, the thesis) or "spline" (natural C2 cubic spline).
+  std::string interpolation{"hermite"};
+  /// Sampling period of the dense reference, s, in [1e-4, 0.05].
+  double control_period{0.005};
+  /// Put the contact changes where the plan has them: each stance's start posture is held through the double
+  /// support (until lift-off) and a landing posture (the next stance's feet with the mid-swing COM, by inverse
+  /// kinematics) is inserted at touch-down, so the swing foot never slides on the ground. False interpolates the
+  /// optimiser's waypoints at their own times only.
+  bool contact_timing{true};
+  /// Compensation passes (each: ZMP from the full model, COM offsets, leg IK), in [1, 100].
+  int max_iterations{8};
+  /// Stop when the RMS ZMP error falls below this, m (> 0).
+  double tolerance{1e-3};
+  /// Stop when a pass improves the RMS error by less than this fraction of it, in [0, 1).
+  double min_improvement{0.02};
+  /// Preview horizon, s, in (0, 5].
+  double preview_time{1.6};
+  /// Weight of the ZMP error (Q) and of the jerk increment (R) of the preview controller (> 0).
+  double preview_q{1.0};
+  double preview_r{1e-6};
+  /// Zero-error padding on each side of the trajectory before the FFT, s, in [0, 10]: the periodic solution
+  /// then wraps through a rest, not from the end to the start.
+  double fft_padding{2.0};
+  /// Sole rectangle (length, width), m, centred on the sole frames: the support polygons of the report.
+  double sole_length{0.24};
+  double sole_width{0.14};
+  std::string left_sole_frame{"l_sole"};
+  std::string right_sole_frame{"r_sole"};
+  /// Waist frame kept at zero roll by the leg inverse kinematics.
+  std::string waist_frame{"pelvis"};
+};
+
+/// Throws std::invalid_argument naming the first option out of range and its valid range.
+void ValidateStabilizerOptions(const StabilizerOptions& options);
+
+}  // namespace cairn::planning
