@@ -61,6 +61,17 @@ ComShiftSolver::ComShiftSolver(std::shared_ptr<const multibody::Model> model, co
 
 ComShiftResult ComShiftSolver::Solve(const Eigen::VectorXd& q_reference, const Eigen::Vector2d& com_target,
                                      int steps) const {
+  if (q_reference.size() != model_->nq() || !q_reference.allFinite()) {
+    throw std::invalid_argument("ComShiftSolver::Solve: the reference needs " + std::to_string(model_->nq()) +
+                                " finite coordinates");
+  }
+  multibody::Data data(*model_);
+  multibody::ForwardKinematics(*model_, data, q_reference);
+  return Solve(q_reference, com_target, data.X_world[static_cast<std::size_t>(base_body_)].rotation(), steps);
+}
+
+ComShiftResult ComShiftSolver::Solve(const Eigen::VectorXd& q_reference, const Eigen::Vector2d& com_target,
+                                     const Eigen::Matrix3d& R_base, int steps) const {
   const multibody::Model& m = *model_;
   if (q_reference.size() != m.nq() || !q_reference.allFinite() || !com_target.allFinite()) {
     throw std::invalid_argument("ComShiftSolver::Solve: the reference needs " + std::to_string(m.nq()) +
@@ -72,7 +83,9 @@ ComShiftResult ComShiftSolver::Solve(const Eigen::VectorXd& q_reference, const E
   multibody::Data data(m);
   multibody::ForwardKinematics(m, data, q_reference);
   const multibody::Pose X_L = multibody::FramePose(m, data, left_), X_R = multibody::FramePose(m, data, right_);
-  const Eigen::Matrix3d R_base = data.X_world[static_cast<std::size_t>(base_body_)].rotation();
+  if (!R_base.allFinite() || !(R_base.transpose() * R_base).isApprox(Eigen::Matrix3d::Identity(), 1e-9)) {
+    throw std::invalid_argument("ComShiftSolver::Solve: the base orientation must be a rotation matrix");
+  }
   // Column scales of the weighted minimum-norm step (the base's linear velocity in world axes): the base's
   // vertical motion costs 100 times a joint's.
   Eigen::VectorXd scale = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(columns_.size()));

@@ -38,7 +38,11 @@ class ComShiftSolver {
 
   /// `q_reference` with its horizontal COM moved to `com_target`, soles and base orientation held, after
   /// `steps` Gauss-Newton steps (in [1, 50]). Throws std::invalid_argument for a wrong size or a non-finite entry.
-  ComShiftResult Solve(const Eigen::VectorXd& q_reference, const Eigen::Vector2d& com_target, int steps = 4) const;
+  ComShiftResult Solve(const Eigen::VectorXd& q_reference, const Eigen::Vector2d& com_target, int steps = 8) const;
+
+  /// The same with the base turned to `R_base` (world) instead of keeping the reference's orientation.
+  ComShiftResult Solve(const Eigen::VectorXd& q_reference, const Eigen::Vector2d& com_target,
+                       const Eigen::Matrix3d& R_base, int steps = 8) const;
 
  private:
   std::shared_ptr<const multibody::Model> model_;

@@ -27,11 +27,16 @@ void ValidateStabilizerOptions(const StabilizerOptions& o) {
     throw std::invalid_argument("StabilizerOptions: interpolation '" + o.interpolation +
                                 "' is unknown; use hermite or spline");
   }
+  if (o.waist_orientation != "interpolated" && o.waist_orientation != "upright") {
+    throw std::invalid_argument("StabilizerOptions: waist_orientation '" + o.waist_orientation +
+                                "' is unknown; use upright or interpolated");
+  }
   CheckRange("control_period", o.control_period, 1e-4, 0.05, false, " s");
   if (o.max_iterations < 1 || o.max_iterations > 100) {
     throw std::invalid_argument("StabilizerOptions: max_iterations " + std::to_string(o.max_iterations) +
                                 " must be in [1, 100]");
   }
+  CheckRange("step_fraction", o.step_fraction, 0.0, 1.0, true, "");
   CheckRange("tolerance", o.tolerance, 0.0, 1.0, true, " m");
   if (!(o.min_improvement >= 0.0 && o.min_improvement < 1.0)) {
     throw std::invalid_argument("StabilizerOptions: min_improvement " + FormatShort(o.min_improvement) +

@@ -24,6 +24,9 @@ struct StabilizerOptions {
   bool contact_timing{true};
   /// Compensation passes (each: ZMP from the full model, COM offsets, leg IK), in [1, 100].
   int max_iterations{8};
+  /// Fraction of each pass's COM offsets applied, in (0, 1]: the full model is far from the linear ZMP equation
+  /// at walking speed (the swing leg, the arms, the waist), and full steps overshoot.
+  double step_fraction{0.5};
   /// Stop when the RMS ZMP error falls below this, m (> 0).
   double tolerance{1e-3};
   /// Stop when a pass improves the RMS error by less than this fraction of it, in [0, 1).
@@ -41,6 +44,13 @@ struct StabilizerOptions {
   double sole_width{0.14};
   std::string left_sole_frame{"l_sole"};
   std::string right_sole_frame{"r_sole"};
+  /// Orientation of the waist (floating base) in the compensated motion: "interpolated" keeps the optimiser's
+  /// (interpolated on the sphere), "upright" turns it to zero roll and pitch with the yaw half-way between the
+  /// soles' (the optimiser leaves the waist's pitch and yaw free, and its waypoints swing them by tens of degrees
+  /// between consecutive waypoints; that swing's angular momentum moves the ZMP by decimetres, which no COM shift
+  /// cancels, but turning it upright moves the whole upper body and, measured on the flat test trajectory, makes
+  /// the compensation worse). The upper body keeps its joint angles relative to the waist either way.
+  std::string waist_orientation{"interpolated"};
   /// Waist frame kept at zero roll by the leg inverse kinematics.
   std::string waist_frame{"pelvis"};
 };
