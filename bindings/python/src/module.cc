@@ -27,6 +27,7 @@ PYBIND11_MODULE(_cairn, m) {
   py::module_ planning = m.def_submodule("planning", "Footstep planning and locomotion: cairn::planning.");
   cairn::python::DefinePlanning(planning);
   cairn::python::DefinePlanningTrajectory(planning);
+  cairn::python::DefinePlanningStabilization(planning);
   cairn::python::DefineExamples(m.def_submodule("examples", "The example systems of examples/systems."));
   cairn::python::FixDynamicAttributeTraversal(m);
 }
