@@ -27,8 +27,8 @@ struct InterpolationKnot {
 };
 
 /// The knots of a whole-body trajectory (thesis 2.5.1c). With options.contact_timing false they are the
-/// optimiser's waypoints at their own times, the reference ZMP their COM projections (the thesis). With it true
-/// (the default) the waypoints are re-timed to the plan's contact events, because the optimiser's stance-start
+/// optimiser's waypoints at their own times, the reference ZMP their COM projections (the thesis, the default).
+/// With it true the waypoints are re-timed to the plan's contact events, because the optimiser's stance-start
 /// posture at t_j already has the COM over the next stance foot and its mid-swing posture follows at
 /// t_j + t_ds + t_sw / 2, so interpolating them directly lifts the swing foot during the double support. Per step
 /// j (t_ds and t_sw recovered from the waypoint times: t_sw = 2 (t_j+1 - t_mid), t_ds = (t_mid - t_j) - t_sw / 2):

@@ -27,7 +27,7 @@ TEST(StabilizerTest, StabilisesOnForcedEventsAndTheOutputCopiesTheState) {
   system.ExecuteForcedEvents(context.get());
   const auto& after = system.get_reference_output_port().Eval<StabilizedTrajectory>(*context);
   ASSERT_TRUE(after.report.success) << after.report.message;
-  EXPECT_EQ(after.q.size(), 171u);  // 3.4 s at 50 Hz
+  EXPECT_EQ(after.q.size(), 161u);  // 3.2 s at 50 Hz
 }
 
 TEST(StabilizerTest, ATrajectoryThatWasNotFoundGivesAnEmptyReferenceThatSaysWhy) {
