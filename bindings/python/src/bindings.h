@@ -39,6 +39,8 @@ void DefinePlanningGrid(py::module_ m);
 /// cairn.planning, whole-body part: TrajectoryOptimizer and OptimizeWholeBodyTrajectory (after DefinePlanning).
 void DefinePlanningTrajectory(py::module_ m);
 void DefinePlanningTerrain(py::module_ m);
+/// cairn.planning, stabilisation part: Stabilizer, StabilizeTrajectory, preview control (after DefinePlanningTrajectory).
+void DefinePlanningStabilization(py::module_ m);
 /// cairn.examples: the example systems the C++ examples are built from.
 void DefineExamples(py::module_ m);
 

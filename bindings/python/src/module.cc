@@ -30,6 +30,7 @@ PYBIND11_MODULE(_cairn, m) {
   cairn::python::DefinePlanningTrajectory(planning);
   cairn::python::DefinePlanningTerrain(planning);
   cairn::python::DefinePlanningGrid(planning);
+  cairn::python::DefinePlanningStabilization(planning);
   cairn::python::DefineExamples(m.def_submodule("examples", "The example systems of examples/systems."));
   cairn::python::FixDynamicAttributeTraversal(m);
 }

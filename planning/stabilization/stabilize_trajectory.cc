@@ -1,0 +1,242 @@
+#include <cairn/planning/stabilization/stabilize_trajectory.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include <cairn/common/number_text.h>
+#include <cairn/multibody/center_of_mass.h>
+#include <cairn/multibody/configuration.h>
+#include <cairn/multibody/data.h>
+#include <cairn/multibody/kinematics.h>
+#include <cairn/planning/stabilization/com_shift_solver.h>
+#include <cairn/planning/stabilization/interpolation_knots.h>
+#include <cairn/planning/stabilization/motion_zmp.h>
+#include <cairn/planning/stabilization/support_polygon.h>
+#include <cairn/planning/stabilization/trajectory_interpolator.h>
+#include <cairn/planning/stabilization/zmp_stabilizer.h>
+
+namespace cairn::planning {
+
+namespace {
+
+struct ErrorStats {
+  double rms{0.0};
+  double max{0.0};
+};
+
+int Unsupported(const std::vector<Eigen::Vector2d>& zmp) {
+  int count = 0;
+  for (const Eigen::Vector2d& p : zmp) count += p.allFinite() ? 0 : 1;
+  return count;
+}
+
+// RMS and maximum of |zmp - reference|; a sample without a ZMP (no support force) counts with the error of the
+// nearest earlier sample that has one (or the next one, at the start).
+ErrorStats Errors(const std::vector<Eigen::Vector2d>& zmp, const std::vector<Eigen::Vector2d>& reference) {
+  ErrorStats stats;
+  const std::size_t n = zmp.size();
+  std::size_t last = n;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (zmp[k].allFinite()) last = k;
+    std::size_t use = last;
+    if (use == n) {
+      use = k;
+      while (use < n && !zmp[use].allFinite()) ++use;
+    }
+    const double e = use < n ? (zmp[use] - reference[use]).norm() : 0.0;
+    stats.rms += e * e;
+    stats.max = std::max(stats.max, e);
+  }
+  stats.rms = n == 0 ? 0.0 : std::sqrt(stats.rms / static_cast<double>(n));
+  return stats;
+}
+
+double MinMargin(const std::vector<std::vector<Eigen::Vector2d>>& polygons, const std::vector<Eigen::Vector2d>& zmp) {
+  double margin = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < zmp.size(); ++k) {
+    if (zmp[k].allFinite()) margin = std::min(margin, SupportMargin(polygons[k], zmp[k]));
+  }
+  return margin;
+}
+
+std::string Millimetres(double metres) { return FormatShort(1000.0 * metres) + " mm"; }
+
+}  // namespace
+
+StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model> model,
+                                         const WholeBodyTrajectory& trajectory, const StabilizerOptions& options) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  if (model == nullptr) throw std::invalid_argument("StabilizeTrajectory: the robot model is null");
+  ValidateStabilizerOptions(options);
+  // Checks the sample count from the waypoint times before building anything.
+  if (!trajectory.waypoints.empty()) {
+    const double span = trajectory.waypoints.back().time - trajectory.waypoints.front().time;
+    const double samples = 2.0 * span / options.control_period;  // contact timing may add one double support
+    if (!std::isfinite(span) || samples > static_cast<double>(kMaxStabilizationSamples)) {
+      throw std::invalid_argument("StabilizeTrajectory: " + FormatShort(span) + " s at a control period of " +
+                                  FormatShort(options.control_period) + " s may need " + FormatShort(samples) +
+                                  " samples, more than the limit of " + std::to_string(kMaxStabilizationSamples) +
+                                  "; lengthen control_period");
+    }
+  }
+  const TrajectoryInterpolator interpolator(model, MakeInterpolationKnots(model, trajectory, options),
+                                            options.interpolation);
+  const double duration = interpolator.end_time() - interpolator.start_time();
+  const auto n = static_cast<std::size_t>(std::ceil(duration / options.control_period - 1e-9)) + 1;
+  if (n > static_cast<std::size_t>(kMaxStabilizationSamples)) {
+    throw std::invalid_argument("StabilizeTrajectory: " + std::to_string(n) + " samples, more than the limit of " +
+                                std::to_string(kMaxStabilizationSamples) + "; lengthen control_period");
+  }
+  const double dt = options.control_period;
+  const multibody::Model& m = *model;
+  multibody::Data data(m);
+  const int left = m.GetFrameIndex(options.left_sole_frame), right = m.GetFrameIndex(options.right_sole_frame);
+
+  StabilizedTrajectory out;
+  out.period = dt;
+  out.report.method = options.method;
+  std::vector<Eigen::VectorXd> q(n), v(n);
+  std::vector<multibody::Pose> left_pose(n), right_pose(n);
+  std::vector<std::vector<Eigen::Vector2d>> polygons(n);
+  std::vector<double> ground(n);
+  std::vector<Eigen::Vector2d> com_start(n);
+  out.zmp_reference.resize(n);
+  out.contacts.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double t = interpolator.start_time() + std::min(duration, dt * static_cast<double>(k));
+    interpolator.Evaluate(t, &q[k], &v[k]);
+    out.zmp_reference[k] = interpolator.ReferenceZmp(t);
+    out.contacts[k] = interpolator.Contacts(t);
+    com_start[k] = multibody::CenterOfMass(m, data, q[k]).head<2>();  // also runs the kinematics
+    left_pose[k] = multibody::FramePose(m, data, left);
+    right_pose[k] = multibody::FramePose(m, data, right);
+    std::vector<multibody::Pose> loaded;
+    if (out.contacts[k] & kLeftSoleContact) loaded.push_back(left_pose[k]);
+    if (out.contacts[k] & kRightSoleContact) loaded.push_back(right_pose[k]);
+    if (loaded.empty()) loaded = {left_pose[k], right_pose[k]};
+    double z = 0.0;
+    for (const multibody::Pose& X : loaded) z += X.translation().z() / static_cast<double>(loaded.size());
+    ground[k] = z;
+    polygons[k] = SupportPolygon(loaded, options.sole_length, options.sole_width);
+  }
+  out.zmp_before = ComputeMotionZmp(m, q, dt, ground);
+  out.report.unsupported_samples_before = Unsupported(out.zmp_before);
+  const ErrorStats before = Errors(out.zmp_before, out.zmp_reference);
+  out.report.rms_error_before = before.rms;
+  out.report.max_error_before = before.max;
+  out.report.min_support_margin_before = MinMargin(polygons, out.zmp_before);
+
+  std::vector<Eigen::Vector2d> zmp = out.zmp_before;
+  out.report.unsupported_samples_after = out.report.unsupported_samples_before;
+  ErrorStats best = before;
+  std::string ending = "interpolation only";
+  if (options.method != "none") {
+    const std::unique_ptr<ZmpStabilizer> stabilizer = MakeZmpStabilizer(options, -m.gravity().z());
+    double com_height = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      com_height += (multibody::CenterOfMass(m, data, q[k]).z() - ground[k]) / static_cast<double>(n);
+    }
+    const auto rows = static_cast<Eigen::Index>(n);
+    Eigen::MatrixXd offsets = Eigen::MatrixXd::Zero(rows, 2);
+    const std::vector<Eigen::VectorXd> interpolated = q;
+    const ComShiftSolver shift(model, options.left_sole_frame, options.right_sole_frame);
+    const bool upright = options.waist_orientation == "upright";
+    std::vector<Eigen::Matrix3d> waist(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      // Yaw half-way between the soles' (through the mean of their heading vectors).
+      const Eigen::Vector3d heading = left_pose[k].rotation().col(0) + right_pose[k].rotation().col(0);
+      waist[k] = Eigen::AngleAxisd(std::atan2(heading.y(), heading.x()), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    }
+    ending = "stopped after max_iterations = " + std::to_string(options.max_iterations);
+    for (int pass = 1; pass <= options.max_iterations; ++pass) {
+      if (best.rms < options.tolerance) {
+        ending = "converged below " + Millimetres(options.tolerance);
+        break;
+      }
+      // The error; a sample without a ZMP takes the error of the nearest sample before it that has one (or
+      // after it, at the start), so the offsets see no jump there.
+      Eigen::MatrixXd error(rows, 2);
+      std::size_t last = n;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (zmp[k].allFinite()) last = k;
+        std::size_t use = last;
+        if (use == n) {
+          use = k;
+          while (use < n && !zmp[use].allFinite()) ++use;
+        }
+        error.row(static_cast<Eigen::Index>(k)) =
+            use < n ? Eigen::RowVector2d((out.zmp_reference[use] - zmp[use]).transpose()) : Eigen::RowVector2d::Zero();
+      }
+      Eigen::MatrixXd trial = offsets;
+      const double fraction = options.step_fraction;
+      trial.col(0) += fraction * stabilizer->ComOffsets(error.col(0), dt, com_height);
+      trial.col(1) += fraction * stabilizer->ComOffsets(error.col(1), dt, com_height);
+      std::vector<Eigen::VectorXd> q_trial(n);
+      double ik_error = 0.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Eigen::Vector2d target = com_start[k] + trial.row(static_cast<Eigen::Index>(k)).transpose();
+        const ComShiftResult shifted = upright ? shift.Solve(interpolated[k], target, waist[k])
+                                               : shift.Solve(interpolated[k], target);
+        q_trial[k] = shifted.q;
+        ik_error = std::max(ik_error, shifted.sole_error);
+      }
+      const std::vector<Eigen::Vector2d> zmp_trial = ComputeMotionZmp(m, q_trial, dt, ground);
+      const int unsupported = Unsupported(zmp_trial);
+      const ErrorStats stats = Errors(zmp_trial, out.zmp_reference);
+      const bool better = stats.rms < best.rms;
+      if (!better) {
+        ending = "pass " + std::to_string(pass) + " did not lower the error (" + Millimetres(stats.rms) + ")";
+        break;
+      }
+      const double gain = (best.rms - stats.rms) / best.rms;
+      out.report.unsupported_samples_after = unsupported;
+      q = std::move(q_trial);
+      zmp = zmp_trial;
+      offsets = trial;
+      best = stats;
+      out.report.iterations = pass;
+      out.report.max_ik_error = ik_error;
+      if (best.rms < options.tolerance && unsupported == 0) {
+        ending = "converged below " + Millimetres(options.tolerance);
+        break;
+      }
+      if (gain < options.min_improvement) {
+        ending = "pass " + std::to_string(pass) + " gained less than " + FormatShort(100.0 * options.min_improvement) +
+                 " %";
+        break;
+      }
+    }
+    v = SampleVelocities(m, q, dt);
+  }
+  out.report.rms_error_after = best.rms;
+  out.report.max_error_after = best.max;
+  out.report.min_support_margin_after = MinMargin(polygons, zmp);
+  out.report.joint_limits_held = true;
+  for (const Eigen::VectorXd& sample : q) {
+    out.report.joint_limits_held = out.report.joint_limits_held && multibody::IsWithinPositionLimits(m, sample, 1e-9);
+  }
+  out.com.resize(n);
+  for (std::size_t k = 0; k < n; ++k) out.com[k] = multibody::CenterOfMass(m, data, q[k]).head<2>();
+  out.zmp = std::move(zmp);
+  out.q = std::move(q);
+  out.v = std::move(v);
+  out.report.success = true;
+  out.report.message = options.method + ": ZMP error RMS " + Millimetres(before.rms) + " -> " +
+                       Millimetres(best.rms) + " (max " + Millimetres(before.max) + " -> " + Millimetres(best.max) +
+                       ") in " + std::to_string(out.report.iterations) + " pass(es), " + ending +
+                       (out.report.joint_limits_held ? "" : "; joint limits violated") +
+                       (out.report.unsupported_samples_after == 0
+                            ? ""
+                            : "; " + std::to_string(out.report.unsupported_samples_after) +
+                                  " sample(s) without support force");
+  out.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return out;
+}
+
+}  // namespace cairn::planning

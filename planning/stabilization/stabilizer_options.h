@@ -1,0 +1,64 @@
+#pragma once
+
+#include <string>
+
+namespace cairn::planning {
+
+/// Most samples a stabilised trajectory may hold (duration / control_period), checked before allocating.
+inline constexpr long long kMaxStabilizationSamples = 200000;
+
+/// Parameters of interpolation and ZMP stabilisation (thesis 2.5.1c). Defaults: 200 Hz, Hermite, the thesis'
+/// FFT compensation; the preview-control defaults are Kajita 2003's common values.
+struct StabilizerOptions {
+  /// "fft" (the thesis' iterative frequency-domain compensation), "preview" (Kajita's preview control on the
+  /// cart-table model) or "none" (interpolation only).
+  std::string method{"fft"};
+  /// "hermite" (cubic with zero derivatives at the knots, the thesis) or "spline" (natural C2 cubic spline).
+  std::string interpolation{"hermite"};
+  /// Sampling period of the dense reference, s, in [1e-4, 0.05].
+  double control_period{0.005};
+  /// False (the thesis): the optimiser's waypoints are interpolated at their own times and the reference ZMP is
+  /// their interpolated COM projection. True: the knots are re-timed to the plan's contact events (the swing foot
+  /// leaves the ground at lift-off, not at the stance's start) and the reference ZMP stays over the stance foot
+  /// until touch-down (MakeInterpolationKnots). Measured on the flat test trajectory, the compensation converges
+  /// far better without it (RMS 578 -> 43 mm against 612 -> 265 mm): at touch-down the re-timed reference asks for
+  /// the COM over the old stance foot while the optimiser's posture has it over the new one, further than the legs
+  /// reach. See docs/stabilization.md.
+  bool contact_timing{false};
+  /// Compensation passes (each: ZMP from the full model, COM offsets, leg IK), in [1, 100].
+  int max_iterations{8};
+  /// Fraction of each pass's COM offsets applied, in (0, 1]: the full model is far from the linear ZMP equation
+  /// at walking speed (the swing leg, the arms, the waist), and full steps overshoot.
+  double step_fraction{0.5};
+  /// Stop when the RMS ZMP error falls below this, m (> 0).
+  double tolerance{1e-3};
+  /// Stop when a pass improves the RMS error by less than this fraction of it, in [0, 1).
+  double min_improvement{0.02};
+  /// Preview horizon, s, in (0, 5].
+  double preview_time{1.6};
+  /// Weight of the ZMP error (Q) and of the jerk increment (R) of the preview controller (> 0).
+  double preview_q{1.0};
+  double preview_r{1e-6};
+  /// Zero-error padding on each side of the trajectory before the FFT, s, in [0, 10]: the periodic solution
+  /// then wraps through a rest, not from the end to the start.
+  double fft_padding{2.0};
+  /// Sole rectangle (length, width), m, centred on the sole frames: the support polygons of the report.
+  double sole_length{0.24};
+  double sole_width{0.14};
+  std::string left_sole_frame{"l_sole"};
+  std::string right_sole_frame{"r_sole"};
+  /// Orientation of the waist (floating base) in the compensated motion: "interpolated" keeps the optimiser's
+  /// (interpolated on the sphere), "upright" turns it to zero roll and pitch with the yaw half-way between the
+  /// soles' (the optimiser leaves the waist's pitch and yaw free, and its waypoints swing them by tens of degrees
+  /// between consecutive waypoints; that swing's angular momentum moves the ZMP by decimetres, which no COM shift
+  /// cancels, but turning it upright moves the whole upper body and, measured on the flat test trajectory, makes
+  /// the compensation worse). The upper body keeps its joint angles relative to the waist either way.
+  std::string waist_orientation{"interpolated"};
+  /// Waist frame kept at zero roll by the leg inverse kinematics.
+  std::string waist_frame{"pelvis"};
+};
+
+/// Throws std::invalid_argument naming the first option out of range and its valid range.
+void ValidateStabilizerOptions(const StabilizerOptions& options);
+
+}  // namespace cairn::planning
