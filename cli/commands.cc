@@ -15,6 +15,7 @@ void RegisterFrictionTrainCommand(CommandRegistry* registry);
 void RegisterFrictionDatasetCommand(CommandRegistry* registry);
 void RegisterPlanCommand(CommandRegistry* registry);
 void RegisterSimulateCommand(CommandRegistry* registry);
+void RegisterAffordanceCommand(CommandRegistry* registry);
 
 void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPendulumCommand(registry);
@@ -27,6 +28,7 @@ void RegisterAllCommands(CommandRegistry* registry) {
   RegisterFrictionDatasetCommand(registry);
   RegisterPlanCommand(registry);
   RegisterSimulateCommand(registry);
+  RegisterAffordanceCommand(registry);
 }
 
 }  // namespace cairn::cli
