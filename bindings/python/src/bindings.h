@@ -29,6 +29,8 @@ void DefinePerceptionStereoOccupancy(py::module_ m);
 void DefinePerceptionFriction(py::module_ m);
 /// cairn.perception: synthetic scenes and evaluation (Middlebury, scores).
 void DefinePerceptionSyntheticEvaluation(py::module_ m);
+/// cairn.perception, haptics part (seed 000) and its simulated world.
+void DefinePerceptionHaptics(py::module_ m);
 /// cairn.planning.
 void DefinePlanning(py::module_ m);
 /// cairn.planning, whole-body part: TrajectoryOptimizer and OptimizeWholeBodyTrajectory (after DefinePlanning).

@@ -24,6 +24,7 @@ PYBIND11_MODULE(_cairn, m) {
   cairn::python::DefinePerceptionStereoOccupancy(perception);
   cairn::python::DefinePerceptionFriction(perception);
   cairn::python::DefinePerceptionSyntheticEvaluation(perception);
+  cairn::python::DefinePerceptionHaptics(perception);
   py::module_ planning = m.def_submodule("planning", "Footstep planning and locomotion: cairn::planning.");
   cairn::python::DefinePlanning(planning);
   cairn::python::DefinePlanningTrajectory(planning);
