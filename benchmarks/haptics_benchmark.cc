@@ -157,7 +157,9 @@ void BM_PclSphereRansac(benchmark::State& state) {
     ransac.setDistanceThreshold(0.003);
     ransac.setMaxIterations(500);
     ransac.computeModel();
-    benchmark::DoNotOptimize(ransac.getInliers());
+    std::vector<int> inliers;
+    ransac.getInliers(inliers);
+    benchmark::DoNotOptimize(inliers.size());
   }
 }
 BENCHMARK(BM_PclSphereRansac)->Unit(benchmark::kMicrosecond);
