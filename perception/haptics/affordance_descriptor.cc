@@ -11,7 +11,7 @@
 namespace cairn::perception {
 namespace {
 
-void CheckBins(int bins, const char* what) {
+void CheckBins(long long bins, const char* what) {
   if (bins < 1 || bins > AffordanceDescriptor::kMaxBins) {
     throw std::invalid_argument(std::string(what) + " is " + FormatShort(bins) + "; it must be between 1 and " +
                                 FormatShort(AffordanceDescriptor::kMaxBins));
@@ -43,9 +43,8 @@ AffordanceDescriptor AffordanceDescriptor::FromValues(const Eigen::VectorXd& val
 }
 
 AffordanceDescriptor AffordanceDescriptor::FromHistogram(const Eigen::MatrixXi& histogram) {
-  CheckBins(static_cast<int>(std::min<Eigen::Index>(histogram.rows(), kMaxBins + 1)), "the number of histogram lines");
-  CheckBins(static_cast<int>(std::min<Eigen::Index>(histogram.cols(), kMaxBins + 1)),
-            "the number of histogram columns");
+  CheckBins(static_cast<long long>(histogram.rows()), "the number of histogram lines");
+  CheckBins(static_cast<long long>(histogram.cols()), "the number of histogram columns");
   if (histogram.minCoeff() < 0) {
     throw std::invalid_argument("the histogram holds the count " + FormatShort(histogram.minCoeff()) +
                                 "; bin counts cannot be negative");

@@ -191,8 +191,8 @@ AffordanceRecall TraversabilityMemory::Recall(const AffordanceDescriptor& observ
                                 " lines but the memory holds " + FormatShort(lines_) + "-line descriptors");
   }
   // The k best so far, sorted by dissimilarity; a fixed array so that a recall allocates nothing.
-  double best_phi[kMaxNeighbours];
-  int best_index[kMaxNeighbours];
+  double best_phi[kMaxNeighbours] = {};
+  int best_index[kMaxNeighbours] = {};
   int found = 0;
   const double* o = observed.values().data();
   const int stride = 4 * lines_;

@@ -91,6 +91,8 @@ TEST(AffordanceDescriptorTest, BadInputNamesTheValue) {
   CAIRN_EXPECT_THROWS_WITH(AffordanceDescriptor::FromHistogram(histogram), std::invalid_argument, "count -3");
   CAIRN_EXPECT_THROWS_WITH(AffordanceDescriptor::FromHistogram(Eigen::MatrixXi(0, 3)), std::invalid_argument,
                            "histogram lines is 0");
+  CAIRN_EXPECT_THROWS_WITH(AffordanceDescriptor::FromHistogram(Eigen::MatrixXi::Zero(2, 5000)),
+                           std::invalid_argument, "histogram columns is 5000", "between 1 and 1024");
 }
 
 }  // namespace
