@@ -17,6 +17,7 @@ void RegisterPlanCommand(CommandRegistry* registry);
 void RegisterSimulateCommand(CommandRegistry* registry);
 void RegisterOracleCommand(CommandRegistry* registry);
 void RegisterTraverseCommand(CommandRegistry* registry);
+void RegisterAffordanceCommand(CommandRegistry* registry);
 
 void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPendulumCommand(registry);
@@ -31,6 +32,7 @@ void RegisterAllCommands(CommandRegistry* registry) {
   RegisterSimulateCommand(registry);
   RegisterOracleCommand(registry);
   RegisterTraverseCommand(registry);
+  RegisterAffordanceCommand(registry);
 }
 
 }  // namespace cairn::cli

@@ -33,6 +33,9 @@ if(CAIRN_BUILD_TESTS OR CAIRN_BENCHMARKS)
   # Peers for cross-checks and benchmarks only; never linked into Cairn's libraries.
   find_package(DART 6.12 CONFIG REQUIRED COMPONENTS utils-urdf)
   find_package(octomap CONFIG QUIET)
+  # PCL (Debian's libpcl-dev) through pkg-config: PCLConfig.cmake would look for VTK, Qt and more than the
+  # haptics cross-check (voxel grid, RANSAC sphere, octree change detection) needs.
+  pkg_check_modules(PCL_PEER QUIET IMPORTED_TARGET pcl_filters pcl_octree pcl_sample_consensus pcl_common)
 endif()
 
 # Python bindings (bindings/python): Debian's /usr/bin/python3 with numpy (the python3 on PATH may be another

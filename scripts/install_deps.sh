@@ -24,7 +24,7 @@ CORE_PACKAGES=(
 )
 # Peers and reference data: used by cross-check tests and benchmarks only, never linked into Cairn's libraries.
 PEER_PACKAGES=(
-  libdart-dev libdart-utils-urdf-dev dart-doc liboctomap-dev
+  libdart-dev libdart-utils-urdf-dev dart-doc liboctomap-dev libpcl-dev
 )
 # Tool scripts only (scripts/train_material_net.py); no test or library needs them.
 SCRIPT_PACKAGES=()

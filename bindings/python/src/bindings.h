@@ -31,6 +31,8 @@ void DefinePerceptionFriction(py::module_ m);
 void DefinePerceptionSyntheticEvaluation(py::module_ m);
 /// cairn.perception: terrain (seed 001) maps, fusion, traversability and their systems.
 void DefinePerceptionTerrain(py::module_ m);
+/// cairn.perception, haptics part (seed 000) and its simulated world.
+void DefinePerceptionHaptics(py::module_ m);
 /// cairn.planning.
 void DefinePlanning(py::module_ m);
 /// cairn.planning, grid part: grid search, probing planner, GridPathPlanner, traverse scenario (after

@@ -25,6 +25,7 @@ PYBIND11_MODULE(_cairn, m) {
   cairn::python::DefinePerceptionFriction(perception);
   cairn::python::DefinePerceptionSyntheticEvaluation(perception);
   cairn::python::DefinePerceptionTerrain(perception);
+  cairn::python::DefinePerceptionHaptics(perception);
   py::module_ planning = m.def_submodule("planning", "Footstep planning and locomotion: cairn::planning.");
   cairn::python::DefinePlanning(planning);
   cairn::python::DefinePlanningTrajectory(planning);
