@@ -262,7 +262,7 @@ void DefinePerceptionHaptics(py::module_ m) {
       .def("LeaveOneOut", &HapticAffordanceExperiment::LeaveOneOut, py::arg("kinds"), py::arg("k"),
            "Fig. 12's experiment.");
 
-  RegisterConvertedAbstractValueType<Eigen::Matrix3Xd>("Matrix3Xd");
+  // Matrix3Xd (the clouds of the ports above) is registered by DefinePerceptionTerrain, which module.cc runs first.
   RegisterBoundAbstractValueType<AffordanceDescriptor>("AffordanceDescriptor");
   RegisterBoundAbstractValueType<AffordanceRecall>("AffordanceRecall");
   RegisterBoundAbstractValueType<TraversabilityMemory>("TraversabilityMemory");
