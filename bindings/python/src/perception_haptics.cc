@@ -25,7 +25,12 @@
 #include "cairn/perception/haptics/point_cloud_reduction.h"
 #include "cairn/perception/haptics/rigid_transform_fit.h"
 #include "cairn/perception/haptics/simulation/haptic_affordance_experiment.h"
+#include "cairn/perception/haptics/simulation/antenna_probe.h"
 #include "cairn/perception/haptics/simulation/haptic_object_library.h"
+#include "cairn/perception/haptics/simulation/haptic_scene_object.h"
+#include "cairn/perception/haptics/simulation/simulated_antenna.h"
+#include "cairn/perception/haptics/simulation/simulated_depth_camera.h"
+#include "cairn/perception/haptics/simulation/simulated_depth_sensor.h"
 #include "cairn/perception/haptics/sphere_ransac.h"
 #include "cairn/perception/haptics/traversability_memory.h"
 #include "numpy_support.h"
@@ -238,6 +243,44 @@ void DefinePerceptionHaptics(py::module_ m) {
       "HapticObjectTraversable",
       [](HapticObjectKind kind, std::uint64_t seed) { return MakeHapticObject(kind, seed).traversable(); },
       py::arg("kind"), py::arg("seed") = 1, "The ground truth of a simulated object.");
+
+  py::class_<HapticSceneObject>(m, "HapticSceneObject", "A simulated object: primitives with their stiffness.")
+      .def("name", &HapticSceneObject::name, "Its name.")
+      .def("traversable", &HapticSceneObject::traversable, "True when no element is stiff.")
+      .def("Translated", &HapticSceneObject::Translated, py::arg("offset"), "The same object moved by `offset`.");
+  m.def("MakeHapticObject", &MakeHapticObject, py::arg("kind"), py::arg("seed") = 1,
+        "A simulated object of `kind` at the origin (ground at z = 0).");
+  py::class_<SimulatedDepthSensor> sensor(m, "SimulatedDepthSensor", "The ray-cast structured-light depth sensor.");
+  py::class_<SimulatedDepthSensor::Options>(sensor, "Options", "200 x 150 px, 57 x 43 degrees, 0.4-4 m.")
+      .def(py::init<>(), "Defaults.")
+      .def_readwrite("width", &SimulatedDepthSensor::Options::width, "Pixels across.")
+      .def_readwrite("height", &SimulatedDepthSensor::Options::height, "Pixels down.")
+      .def_readwrite("min_range", &SimulatedDepthSensor::Options::min_range, "m.")
+      .def_readwrite("max_range", &SimulatedDepthSensor::Options::max_range, "m.")
+      .def_readwrite("noise_coefficient", &SimulatedDepthSensor::Options::noise_coefficient,
+                     "Depth noise sigma = coefficient z^2.")
+      .def_readwrite("render_ground", &SimulatedDepthSensor::Options::render_ground, "Also the ground plane.");
+  sensor.def_static("LookingAlong", &SimulatedDepthSensor::LookingAlong, py::arg("position_W"), py::arg("yaw"),
+                    "X_WC (4x4) of a sensor at a point looking horizontally along heading `yaw`.");
+  py::class_<SimulatedAntenna> antenna(m, "SimulatedAntenna", "The pan-tilt-telescopic antenna.");
+  py::class_<SimulatedAntenna::Options>(antenna, "Options", "Pan and tilt +-90 degrees, 5 cm-1 m, 1 cm tip.")
+      .def(py::init<>(), "Defaults.")
+      .def_readwrite("max_extension", &SimulatedAntenna::Options::max_extension, "m.")
+      .def_readwrite("tip_radius", &SimulatedAntenna::Options::tip_radius, "m.")
+      .def_readwrite("step", &SimulatedAntenna::Options::step, "Largest tip motion between checks, m.");
+  py::class_<SimulatedDepthCamera, systems::LeafSystem>(
+      m, "SimulatedDepthCamera",
+      "System: input `X_WC` (4x4); output `points_C` ((3, N)), rendered every `period` s and held as state.")
+      .def(py::init<const SimulatedDepthSensor::Options&, std::vector<HapticSceneObject>, double, std::uint64_t>(),
+           py::arg("sensor"), py::arg("objects_W"), py::arg("period"), py::arg("seed"), "ValueError for bad options.");
+  py::class_<AntennaProbe, systems::LeafSystem>(
+      m, "AntennaProbe",
+      "System: inputs `plan`, `descriptor`, `X_WC`; outputs `outcome` (HapticOutcome), `interactions`; touches the "
+      "planned points every `period` s.")
+      .def(py::init<const SimulatedAntenna::Options&, std::vector<HapticSceneObject>, const Eigen::Isometry3d&, int,
+                    double, double>(),
+           py::arg("antenna"), py::arg("objects_W"), py::arg("X_CA"), py::arg("descriptor_lines"), py::arg("period"),
+           py::arg("offset") = 0.0, "ValueError for bad options.");
 
   py::class_<TraversabilityConfusion>(m, "TraversabilityConfusion", "counts[actual][predicted], traversable first.")
       .def_readonly("counts", &TraversabilityConfusion::counts, "2 x 2 counts.")

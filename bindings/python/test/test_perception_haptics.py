@@ -90,3 +90,22 @@ def test_simulated_rock_blocks_the_antenna():
     assert blocked and planned > 0
     assert not perception.HapticObjectTraversable(perception.HapticObjectKind.kRock)
     assert perception.HapticObjectName(perception.DataSet1()[3]) == "(d) shrub"
+
+
+def test_simulated_camera_and_antenna_systems():
+    wall = perception.MakeHapticObject(perception.HapticObjectKind.kWall)
+    assert not wall.traversable()
+    X_WC = perception.SimulatedDepthSensor.LookingAlong(np.array([-1.2, 0.0, 0.35]), 0.0)
+    np.testing.assert_allclose(X_WC[:3, 2], [1.0, 0.0, 0.0], atol=1e-12)  # looking along +x
+    camera = perception.SimulatedDepthCamera(perception.SimulatedDepthSensor.Options(), [wall], 0.1, 7)
+    simulator = Simulator(camera)
+    camera.GetInputPort("X_WC").FixValue(simulator.get_mutable_context(), X_WC)
+    simulator.AdvanceTo(0.15)
+    points = camera.GetOutputPort("points_C").Eval(simulator.get_context())
+    assert points.shape[0] == 3 and points.shape[1] > 100
+    # The wall stands in front: every point lies ahead of the sensor, within its range.
+    assert np.all(points[2] > 0.4) and np.all(points[2] < 4.0)
+    probe = perception.AntennaProbe(perception.SimulatedAntenna.Options(), [wall], np.eye(4), 14, 0.1)
+    assert probe.num_output_ports() == 2
+    with pytest.raises(ValueError):
+        perception.SimulatedDepthCamera(perception.SimulatedDepthSensor.Options(), [wall], 0.0, 7)
