@@ -95,10 +95,10 @@ int RunBuild(const OracleBuildArguments& args) {
     // The ranks share the machine's cores unless told otherwise.
     const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     options.num_threads = args.threads > 0 ? args.threads : std::max(1, cores / mpi.size());
-    ProgressBar bar = ProgressBar::ForStderr("building the transition oracle");
-    const int mine = static_cast<int>(builder->ChunksOfRank(mpi.rank(), mpi.size()).size());
+    // Rank 0 draws its own chunks' progress; the other ranks stay quiet.
+    ProgressBar bar = ProgressBar::ForStderr("building the transition oracle (rank 0's entries)");
+    if (mpi.rank() == 0) options.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
     const OracleShardBuilder::ShardReport report = builder->BuildShard(mpi.rank(), mpi.size(), options);
-    if (mpi.rank() == 0) bar.Update(static_cast<std::size_t>(mine), static_cast<std::size_t>(mine));
     computed = report.computed;
     resumed = report.resumed;
   } catch (const std::exception& e) {

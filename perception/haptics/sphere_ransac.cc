@@ -139,6 +139,13 @@ SphereFit SphereRansac::Fit(const Eigen::Matrix3Xd& points) const {
       best.inliers = std::move(refined);
     }
   }
+  // The hypothesis' own three or four points are inliers up to rounding; at coordinates far from the origin
+  // rounding can leave none, and there is no centroid to report.
+  if (best.inliers.empty()) {
+    throw std::runtime_error("the best RANSAC sphere (radius " + FormatShort(best.radius) + " m) has no inlier within " +
+                             FormatShort(options_.inlier_threshold) + " m; move the cloud near the origin or widen "
+                             "the inlier threshold");
+  }
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const int i : best.inliers) sum += points.col(i);
   best.inlier_centroid = sum / static_cast<double>(best.inliers.size());

@@ -276,6 +276,13 @@ TraversabilityMemory TraversabilityMemory::FromText(const std::string& text, con
       parser.Fail(error.what());
     }
   }();
+  // An entry is its label and 4 * lines numbers, each at least one character and a separator: a header that
+  // declares more entries than the file could hold fails here, before anything is reserved for them.
+  if (static_cast<double>(entries) * 2.0 * (1.0 + 4.0 * lines) > static_cast<double>(text.size())) {
+    parser.Fail("the header declares " + FormatShort(entries) + " entries of " + FormatShort(1 + 4 * lines) +
+                " fields, more than the file's " + FormatShort(static_cast<long long>(text.size())) +
+                " bytes can hold; the file is truncated or its header is wrong");
+  }
   memory.values_.reserve(static_cast<std::size_t>(entries) * 4 * lines);
   memory.labels_.reserve(static_cast<std::size_t>(entries));
   for (long long e = 0; e < entries; ++e) {

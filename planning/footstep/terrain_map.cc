@@ -146,10 +146,10 @@ void TerrainMap::SetOccupiedVoxels(std::vector<OccupiedVoxel> voxels, double siz
   }
   for (std::size_t i = 0; i < voxels.size(); ++i) {
     const OccupiedVoxel& v = voxels[i];
-    if (!v.center.allFinite() || !(v.probability > 0.0 && v.probability < 1.0)) {
+    if (!v.center.allFinite() || !(v.probability > 0.0 && v.probability <= 1.0)) {
       std::ostringstream message;
       message << "TerrainMap::SetOccupiedVoxels: voxel " << i << " at (" << v.center.transpose() << ") has probability "
-              << v.probability << "; give a finite centre and a probability in (0, 1)";
+              << v.probability << "; give a finite centre and a probability in (0, 1]";
       throw std::invalid_argument(message.str());
     }
   }

@@ -82,7 +82,7 @@ class TerrainMap {
 
   /// Replaces the occupied voxels by `voxels`, cubes of side `size` (m). Unlike AddObstacle, voxels leave the
   /// ground below them as it is (a foot's support is the ground cells' business; voxels only block bodies). Throws
-  /// std::invalid_argument for a non-positive or non-finite size, a voxel whose probability is outside (0, 1) or
+  /// std::invalid_argument for a non-positive or non-finite size, a voxel whose probability is outside (0, 1] or
   /// whose centre is not finite (naming its index), or more than kMaxVoxels voxels.
   void SetOccupiedVoxels(std::vector<OccupiedVoxel> voxels, double size);
   /// The occupied voxels, in the order given.

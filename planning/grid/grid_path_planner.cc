@@ -59,6 +59,7 @@ void GridPathPlanner::Update(const systems::Context& context, systems::State* ne
   grid.min_corner = min_corner_;
   const Eigen::VectorXd& start = get_start_input_port().Eval<Eigen::VectorXd>(context);
   const Eigen::VectorXd& goal = get_goal_input_port().Eval<Eigen::VectorXd>(context);
+  grid.Validate();  // an empty or malformed map is reported as such, not as a start outside it
   const Eigen::Vector2i s = grid.CellOf(start.head<2>());
   const Eigen::Vector2i g = grid.CellOf(goal.head<2>());
   if (!grid.Contains(s) || !grid.Contains(g)) {

@@ -145,14 +145,25 @@ OracleShardBuilder::ShardReport OracleShardBuilder::BuildShard(int rank, int num
   }
   ShardReport report;
   std::vector<TransitionOracle::Entry> entries;
+  // Progress over the rank's chunks: entries of the chunks before this one plus this one's.
+  std::size_t total = 0, finished = 0;
+  for (const int chunk : chunks) total += CellsIn(chunk) * grid_.mu.size();
+  OracleBuildOptions chunk_options = options;
+  if (options.progress) {
+    chunk_options.progress = [&](std::size_t done, std::size_t) { options.progress(finished + done, total); };
+  }
   for (const int chunk : chunks) {
     std::string why;
+    const std::size_t chunk_entries = CellsIn(chunk) * grid_.mu.size();
     if (ReadChunk(chunk, &entries, &why)) {
       ++report.resumed;
+      finished += chunk_entries;
+      if (options.progress) options.progress(finished, total);
       continue;
     }
     if (!why.empty()) ++report.replaced;
-    entries = TransitionOracle::BuildCells(*model_, objective_, grid_, FirstCell(chunk), CellsIn(chunk), options);
+    entries = TransitionOracle::BuildCells(*model_, objective_, grid_, FirstCell(chunk), CellsIn(chunk), chunk_options);
+    finished += chunk_entries;
     const std::string payload = TransitionOracle::EncodeEntries(entries);
     std::string header = std::string(kChunkMagic) + "\n";
     header += "key " + HashHex(key_) + "\n";
@@ -208,6 +219,13 @@ TransitionOracle OracleShardBuilder::Merge() const {
 void OracleShardBuilder::RemoveCheckpoints() const {
   std::error_code error;
   for (int k = 0; k < num_chunks_; ++k) std::filesystem::remove(ChunkPath(k), error);
+  // A rank killed while writing a chunk leaves WriteFileAtomically's temporary file (chunk-N.bin.tmp.XXXXXX).
+  std::vector<std::filesystem::path> leftovers;
+  for (std::filesystem::directory_iterator it(folder_, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("chunk-", 0) == 0 && name.find(".bin.tmp.") != std::string::npos) leftovers.push_back(it->path());
+  }
+  for (const std::filesystem::path& path : leftovers) std::filesystem::remove(path, error);
   if (std::filesystem::is_empty(folder_, error) && !error) std::filesystem::remove(folder_, error);
 }
 

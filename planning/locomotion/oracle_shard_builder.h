@@ -55,7 +55,8 @@ class OracleShardBuilder {
   std::string ChunkPath(int chunk) const;
 
   /// Computes the missing chunks of rank `rank` of `num_ranks` (creating the checkpoint folder), one line per
-  /// chunk to `log` when not null. Throws std::invalid_argument for num_ranks < 1 or rank outside [0, num_ranks),
+  /// chunk to `log` when not null. options.progress counts the entries of all this rank's chunks (resumed ones
+  /// at once). Throws std::invalid_argument for num_ranks < 1 or rank outside [0, num_ranks),
   /// std::runtime_error when the folder or a chunk cannot be written (naming it).
   ShardReport BuildShard(int rank, int num_ranks, const OracleBuildOptions& options = OracleBuildOptions(),
                          std::ostream* log = nullptr) const;
@@ -67,8 +68,8 @@ class OracleShardBuilder {
   /// and how many there are when any chunk is not there or not valid for this build.
   TransitionOracle Merge() const;
 
-  /// Removes the chunk files of this build and the folder when it is left empty (after a successful Merge and
-  /// Save); other files in the folder are kept. Never throws: a chunk left behind only costs disk space.
+  /// Removes the chunk files of this build (and temporary files of chunks whose write was interrupted) and the
+  /// folder when it is left empty (after a successful Merge and Save); other files in the folder are kept. Never throws: a chunk left behind only costs disk space.
   void RemoveCheckpoints() const;
 
  private:

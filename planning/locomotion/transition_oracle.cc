@@ -174,6 +174,16 @@ void OracleGrid::Validate(const StepReach& reach) const {
   ValidateAxis(dz, "dz", reach.dz_min, reach.dz_max, false);
   ValidateAxis(dtheta, "dtheta", reach.dtheta_min, reach.dtheta_max, false);
   ValidateAxis(mu, "mu", 0.0, std::numeric_limits<double>::infinity(), true);
+  // Counted in double: five axes of up to 10^4 values overflow no double, unlike a size_t product.
+  const double entries = static_cast<double>(dx.size()) * static_cast<double>(dy.size()) *
+                         static_cast<double>(dz.size()) * static_cast<double>(dtheta.size()) * static_cast<double>(mu.size());
+  if (entries > kMaxEntries) {
+    throw std::invalid_argument("OracleGrid: " + FormatShort(dx.size()) + " dx x " + FormatShort(dy.size()) + " dy x " +
+                                FormatShort(dz.size()) + " dz x " + FormatShort(dtheta.size()) + " dtheta x " +
+                                FormatShort(mu.size()) + " mu = " + FormatShort(entries) +
+                                " entries, more than the limit of " + FormatShort(kMaxEntries) +
+                                "; use fewer axis values");
+  }
 }
 
 bool operator==(const OracleGrid& a, const OracleGrid& b) {

@@ -42,8 +42,12 @@ struct OracleGrid {
   /// Most values an axis read by Load may hold.
   static constexpr std::size_t kMaxAxisValues = 10000;
 
+  /// Most entries a grid may have: 2^26 (4.8 GB of entries in memory; the default grid has 8,064).
+  static constexpr double kMaxEntries = 67108864.0;
+
   /// Throws std::invalid_argument naming the axis and the bad value if an axis is empty, not strictly
-  /// increasing, non-finite, outside `reach` (mu: not positive), or dy is not positive.
+  /// increasing, non-finite, outside `reach` (mu: not positive), or dy is not positive, and naming the count if
+  /// the grid has more than kMaxEntries entries.
   void Validate(const StepReach& reach) const;
 };
 

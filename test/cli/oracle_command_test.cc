@@ -74,10 +74,11 @@ TEST_F(OracleCommandTest, AKilledBuildResumesFromItsCheckpoints) {
   ASSERT_EQ(RunCairnStreams(Build(clean.string(), "--chunk-cells 1")).exit_code, 0);
   const fs::path parts = dir_ / "parts";
   const std::string script = (dir_ / "kill.sh").string();
-  // At most 60 s of polling, so a build that never writes a chunk cannot hang the test.
+  // At most 60 s of polling, so a build that never writes a chunk cannot hang the test. Only finished chunks count
+  // (WriteFileAtomically's temporary files are named chunk-N.bin.tmp.XXXXXX).
   std::ofstream(script) << CAIRN_CLI_PATH << " " << Build(resumed.string(), "--chunk-cells 1 --checkpoint " + parts.string())
                         << " >/dev/null 2>&1 &\npid=$!\nfor i in $(seq 1200); do\n"
-                        << "  [ \"$(ls " << parts.string() << " 2>/dev/null | grep -c '^chunk-')\" -ge 3 ] && break\n"
+                        << "  [ \"$(ls " << parts.string() << " 2>/dev/null | grep -c '^chunk-[0-9]*\\.bin$')\" -ge 3 ] && break\n"
                         << "  sleep 0.05\ndone\nkill -9 $pid 2>/dev/null\nwait $pid 2>/dev/null\nexit 0\n";
   ASSERT_EQ(std::system(("sh " + script).c_str()), 0);
   if (fs::exists(resumed)) GTEST_SKIP() << "the build finished before it could be killed";

@@ -66,7 +66,7 @@ def test_voxels_and_the_planners_free_probability_level():
     with pytest.raises(ValueError, match="2 centres but 1 probabilities"):
         terrain.SetOccupiedVoxels(np.zeros((2, 3)), np.array([0.5]), 0.05)
     with pytest.raises(ValueError, match="voxel 0"):
-        terrain.SetOccupiedVoxels(np.zeros((1, 3)), np.array([1.0]), 0.05)
+        terrain.SetOccupiedVoxels(np.zeros((1, 3)), np.array([1.5]), 0.05)
     options = planning.FootstepPlannerOptions()
     assert options.min_body_free_probability == pytest.approx(0.9)
 

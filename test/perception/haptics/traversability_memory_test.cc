@@ -120,6 +120,9 @@ TEST(TraversabilityMemoryTest, MalformedFilesNameTheLineAndValue) {
                            std::runtime_error, "zeta is -1");
   CAIRN_EXPECT_THROWS_WITH(TraversabilityMemory::FromText(replace("entries 4", "entries 100001"), "m.txt"),
                            std::runtime_error, "entries '100001' is not an integer between 0 and 100000");
+  // A header asking for far more entries than the file holds fails before memory is reserved for them.
+  CAIRN_EXPECT_THROWS_WITH(TraversabilityMemory::FromText(replace("entries 4", "entries 100000"), "m.txt"),
+                           std::runtime_error, "declares 100000 entries of 5 fields", "truncated");
   CAIRN_EXPECT_THROWS_WITH(TraversabilityMemory::FromText(replace("entries 4", "entries 5"), "m.txt"),
                            std::runtime_error, "ends where entry 4 was expected");
   CAIRN_EXPECT_THROWS_WITH(TraversabilityMemory::FromText(replace("entries 4", "entries 3"), "m.txt"),

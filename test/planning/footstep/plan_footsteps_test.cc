@@ -123,8 +123,8 @@ TEST(PlanFootstepsTest, WalksAroundAWallAndKeepsTheBodyClear) {
 }
 
 // Uncertain evidence of an obstacle (occupied voxels with probability 0.6 where a wall would stand): the body
-// must keep clear of it at eta_geom = 0.9 (free with probability 0.4 < 0.9), and may walk through it when the
-// planner accepts a body box free with probability 0.3.
+// must keep clear of it at eta_geom = 0.9 (each voxel alone leaves it free with probability 0.4 < 0.9), and may
+// walk through it when the planner accepts any evidence (eta_geom = 1e-300).
 TEST(PlanFootstepsTest, KeepsTheBodyOutOfUncertainObstaclesByItsFreeProbability) {
   TerrainMap ground = FlatGround(-0.5, -1.5, 2.5, 1.5, 1.0);
   std::vector<TerrainMap::OccupiedVoxel> voxels;

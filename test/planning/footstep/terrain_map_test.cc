@@ -78,8 +78,11 @@ TEST(TerrainMapTest, BoxFreeProbabilityMultipliesTheOverlappingVoxels) {
   EXPECT_FALSE(map.DiscMeetsVoxel(Eigen::Vector2d(1.0, 1.0), 0.2, 0.9, 1.5, 0.5));  // above it
   map.SetOccupiedVoxels({}, 0.05);
   EXPECT_EQ(map.BoxFreeProbability(Eigen::Vector3d(1.0, 1.0, 0.8), half, 0.0), 1.0);
-  CAIRN_EXPECT_THROWS_WITH(map.SetOccupiedVoxels({{Eigen::Vector3d::Zero(), 0.4}, {Eigen::Vector3d::Zero(), 1.0}}, 0.05),
-                           std::invalid_argument, "voxel 1", "probability 1", "in (0, 1)");
+  CAIRN_EXPECT_THROWS_WITH(map.SetOccupiedVoxels({{Eigen::Vector3d::Zero(), 0.4}, {Eigen::Vector3d::Zero(), 0.0}}, 0.05),
+                           std::invalid_argument, "voxel 1", "probability 0", "in (0, 1]");
+  // Certainly occupied (a grid whose clamp allows probability 1): the box is certainly not free.
+  map.SetOccupiedVoxels({{Eigen::Vector3d(1.0, 1.0, 0.8), 1.0}}, 0.05);
+  EXPECT_EQ(map.BoxFreeProbability(Eigen::Vector3d(1.0, 1.0, 0.8), half, 0.0), 0.0);
   CAIRN_EXPECT_THROWS_WITH(map.SetOccupiedVoxels({}, 0.0), std::invalid_argument, "voxel size 0 m");
 }
 

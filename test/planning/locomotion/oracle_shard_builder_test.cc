@@ -82,7 +82,16 @@ TEST_F(OracleShardBuilderTest, AnInterruptedBuildResumesAndReplacesBadChunks) {
                            "run the build again");
   // A later run on one process computes only what is missing.
   std::ostringstream log;
-  const OracleShardBuilder::ShardReport report = builder.BuildShard(0, 1, Options(), &log);
+  OracleBuildOptions counted = Options();
+  std::size_t last_done = 0, last_total = 0;
+  counted.progress = [&](std::size_t done, std::size_t total) {
+    EXPECT_GE(done, last_done);
+    last_done = done;
+    last_total = total;
+  };
+  const OracleShardBuilder::ShardReport report = builder.BuildShard(0, 1, counted, &log);
+  EXPECT_EQ(last_total, 16u);  // every entry of the rank's chunks, the resumed ones included
+  EXPECT_EQ(last_done, 16u);
   EXPECT_EQ(report.computed, 1);
   EXPECT_EQ(report.resumed, 2);
   EXPECT_EQ(report.replaced, 0);

@@ -353,6 +353,14 @@ TEST_F(TransitionOracleTest, ValidatesGrids) {
   grid.dz.clear();
   CAIRN_EXPECT_THROWS_WITH(TransitionOracle::Build(*model_, WalkingObjective::kComWork, grid), std::invalid_argument,
                            "'dz' is empty");
+  // 10,000 dx x 2 x 2 x 2 x 1,000 mu = 8e7 entries: refused before anything is allocated.
+  grid = Grid();
+  grid.dx.clear();
+  for (int i = 0; i < 10000; ++i) grid.dx.push_back(0.1 + 0.2 * i / 10000.0);
+  grid.mu.clear();
+  for (int i = 1; i <= 1000; ++i) grid.mu.push_back(0.001 * i);
+  CAIRN_EXPECT_THROWS_WITH(grid.Validate(model_->reach()), std::invalid_argument, "8e+07 entries",
+                           "more than the limit of 6.71089e+07");
   const OracleGrid standard = OracleGrid::Default(*model_);
   EXPECT_NO_THROW(standard.Validate(model_->reach()));
   EXPECT_EQ(standard.dx.size(), 8u);
