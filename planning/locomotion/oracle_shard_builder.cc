@@ -219,7 +219,8 @@ TransitionOracle OracleShardBuilder::Merge() const {
 void OracleShardBuilder::RemoveCheckpoints() const {
   std::error_code error;
   for (int k = 0; k < num_chunks_; ++k) std::filesystem::remove(ChunkPath(k), error);
-  // A rank killed while writing a chunk leaves WriteFileAtomically's temporary file (chunk-N.bin.tmp.XXXXXX).
+  // A rank killed while writing a chunk leaves WriteFileAtomically's temporary file, named after the chunk
+  // file with ".tmp." and a random suffix appended.
   std::vector<std::filesystem::path> leftovers;
   for (std::filesystem::directory_iterator it(folder_, error), end; !error && it != end; it.increment(error)) {
     const std::string name = it->path().filename().string();
