@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -141,6 +142,9 @@ TEST(PlanFootstepsTest, KeepsTheBodyOutOfUncertainObstaclesByItsFreeProbability)
   FootstepPlannerOptions options = Options();
   options.search.initial_epsilon = 2.0;
   options.search.final_epsilon = 2.0;
+  // An expansion budget, not the wall clock: the sanitized build is about ten times slower.
+  options.search.time_limit = std::numeric_limits<double>::infinity();
+  options.search.max_expansions = 5000000;
   const FootstepPlan cautious = PlanFootsteps(ground, StanceAt(0.0), goal, model, geometry, options);
   ExpectConsistentPlan(cautious, goal, model);
   for (int k = 0; k < static_cast<int>(cautious.steps.size()); ++k) {
