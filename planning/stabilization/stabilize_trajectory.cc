@@ -1,6 +1,8 @@
 #include <cairn/planning/stabilization/stabilize_trajectory.h>
 
+#include <algorithm>
 #include <chrono>
+#include <utility>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -17,6 +19,7 @@
 #include <cairn/planning/stabilization/com_shift_solver.h>
 #include <cairn/planning/stabilization/interpolation_knots.h>
 #include <cairn/planning/stabilization/motion_zmp.h>
+#include <cairn/planning/stabilization/pelvis_pose_solver.h>
 #include <cairn/planning/stabilization/support_polygon.h>
 #include <cairn/planning/stabilization/trajectory_interpolator.h>
 #include <cairn/planning/stabilization/zmp_stabilizer.h>
@@ -67,6 +70,73 @@ double MinMargin(const std::vector<std::vector<Eigen::Vector2d>>& polygons, cons
 
 std::string Millimetres(double metres) { return FormatShort(1000.0 * metres) + " mm"; }
 
+// The soles' poses over one knot segment under contact timing: both on the ground (start == end), or one
+// swinging from its lift-off pose to its touch-down pose over [t0, t1] with the apex height `lift` above the
+// straight line at mid-swing.
+struct SolePath {
+  double t0{0.0}, t1{0.0};
+  multibody::Pose left0, right0, left1, right1;
+  int swing{0};  // 0: none, else kLeftSoleContact or kRightSoleContact
+  double lift{0.0};
+};
+
+std::vector<SolePath> MakeSolePaths(const multibody::Model& model, const std::vector<InterpolationKnot>& knots,
+                                    const StabilizerOptions& options) {
+  multibody::Data data(model);
+  const int left = model.GetFrameIndex(options.left_sole_frame), right = model.GetFrameIndex(options.right_sole_frame);
+  std::vector<multibody::Pose> L(knots.size()), R(knots.size());
+  for (std::size_t i = 0; i < knots.size(); ++i) {
+    multibody::ForwardKinematics(model, data, knots[i].q);
+    L[i] = multibody::FramePose(model, data, left);
+    R[i] = multibody::FramePose(model, data, right);
+  }
+  const int both = kLeftSoleContact | kRightSoleContact;
+  std::vector<SolePath> paths;
+  for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
+    SolePath path;
+    if (knots[i].contacts == both && knots[i + 1].contacts == both) {
+      path = {knots[i].time, knots[i + 1].time, L[i], R[i], L[i], R[i], 0, 0.0};
+    } else if (knots[i + 1].contacts != both && i + 2 < knots.size()) {
+      // lift-off (i) -> mid-swing (i + 1) -> touch-down (i + 2): one path over both segments.
+      const int swing = both & ~knots[i + 1].contacts;
+      const multibody::Pose& mid = swing == kLeftSoleContact ? L[i + 1] : R[i + 1];
+      const multibody::Pose& from = swing == kLeftSoleContact ? L[i] : R[i];
+      const multibody::Pose& to = swing == kLeftSoleContact ? L[i + 2] : R[i + 2];
+      const double lift = mid.translation().z() - 0.5 * (from.translation().z() + to.translation().z());
+      path = {knots[i].time, knots[i + 2].time, L[i], R[i], L[i + 2], R[i + 2], swing, std::max(lift, 0.0)};
+      ++i;
+    } else {
+      path = {knots[i].time, knots[i + 1].time, L[i], R[i], L[i + 1], R[i + 1], 0, 0.0};
+    }
+    paths.push_back(path);
+  }
+  return paths;
+}
+
+multibody::Pose Blend(const multibody::Pose& a, const multibody::Pose& b, double s) {
+  const Eigen::Quaterniond qa(a.rotation()), qb(b.rotation());
+  Eigen::Vector3d p = a.translation() + s * (b.translation() - a.translation());
+  return multibody::Pose(qa.slerp(s, qb).toRotationMatrix(), p);
+}
+
+// Soles at time t: the swing sole's horizontal motion and turn follow the minimum-jerk profile
+// 10 u^3 - 15 u^4 + 6 u^5 (zero velocity and acceleration at lift-off and touch-down), its height the straight
+// line plus lift * 16 u^2 (1 - u)^2 (zero vertical velocity at both ends, the apex at mid-swing).
+std::pair<multibody::Pose, multibody::Pose> SolePosesAt(const std::vector<SolePath>& paths, double t) {
+  std::size_t i = 0;
+  while (i + 1 < paths.size() && t > paths[i].t1) ++i;
+  const SolePath& path = paths[i];
+  if (path.swing == 0) return {path.left0, path.right0};
+  const double u = std::clamp((t - path.t0) / (path.t1 - path.t0), 0.0, 1.0);
+  const double s = u * u * u * (10.0 - 15.0 * u + 6.0 * u * u);
+  multibody::Pose moved = path.swing == kLeftSoleContact ? Blend(path.left0, path.left1, s)
+                                                         : Blend(path.right0, path.right1, s);
+  const Eigen::Vector3d lifted = moved.translation() + Eigen::Vector3d(0, 0, path.lift * 16.0 * u * u * (1 - u) * (1 - u));
+  moved = multibody::Pose(moved.rotation(), lifted);
+  if (path.swing == kLeftSoleContact) return {moved, path.right0};
+  return {path.left0, moved};
+}
+
 }  // namespace
 
 StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model> model,
@@ -85,8 +155,10 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
                                   "; lengthen control_period");
     }
   }
-  const TrajectoryInterpolator interpolator(model, MakeInterpolationKnots(model, trajectory, options),
-                                            options.interpolation);
+  std::vector<InterpolationKnot> knots = MakeInterpolationKnots(model, trajectory, options);
+  const std::vector<SolePath> sole_paths = options.contact_timing ? MakeSolePaths(*model, knots, options)
+                                                                  : std::vector<SolePath>();
+  const TrajectoryInterpolator interpolator(model, std::move(knots), options.interpolation);
   const double duration = interpolator.end_time() - interpolator.start_time();
   const auto n = static_cast<std::size_t>(std::ceil(duration / options.control_period - 1e-9)) + 1;
   if (n > static_cast<std::size_t>(kMaxStabilizationSamples)) {
@@ -98,6 +170,14 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
   multibody::Data data(m);
   const int left = m.GetFrameIndex(options.left_sole_frame), right = m.GetFrameIndex(options.right_sole_frame);
 
+  const PelvisPoseSolver placement(model, options.left_sole_frame, options.right_sole_frame);
+  const Eigen::Index leg_count = m.nq() - 7;  // the seed's joints from the previous sample (legs' branch)
+  struct Placement {
+    Eigen::Matrix3d R_base;
+    multibody::Pose left, right;
+    double base_height{0.0};
+  };
+  std::vector<Placement> placed(sole_paths.empty() ? 0 : n);
   StabilizedTrajectory out;
   out.period = dt;
   out.report.method = options.method;
@@ -113,6 +193,22 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
     interpolator.Evaluate(t, &q[k], &v[k]);
     out.zmp_reference[k] = interpolator.ReferenceZmp(t);
     out.contacts[k] = interpolator.Contacts(t);
+    if (!sole_paths.empty()) {
+      // With contact timing the soles follow the plan's contacts exactly: still on the ground from touch-down to
+      // lift-off, the swing sole on a smooth path (SolePosesAt) instead of wherever the interpolated postures
+      // put it; the posture's COM is kept.
+      const auto [X_left, X_right] = SolePosesAt(sole_paths, t);
+      const Eigen::Vector3d heading = X_left.rotation().col(0) + X_right.rotation().col(0);
+      const Eigen::Matrix3d R_base =
+          options.waist_orientation == "upright"
+              ? Eigen::AngleAxisd(std::atan2(heading.y(), heading.x()), Eigen::Vector3d::UnitZ()).toRotationMatrix()
+              : Eigen::Quaterniond(q[k](3), q[k](4), q[k](5), q[k](6)).normalized().toRotationMatrix();
+      const Eigen::Vector2d com = multibody::CenterOfMass(m, data, q[k]).head<2>();
+      placed[k] = {R_base, X_left, X_right, q[k](2) - options.crouch};
+      Eigen::VectorXd seed = q[k];
+      if (k > 0) seed.segment(7, leg_count) = q[k - 1].segment(7, leg_count);
+      q[k] = placement.Solve(seed, com, R_base, placed[k].base_height, X_left, X_right).q;
+    }
     com_start[k] = multibody::CenterOfMass(m, data, q[k]).head<2>();  // also runs the kinematics
     left_pose[k] = multibody::FramePose(m, data, left);
     right_pose[k] = multibody::FramePose(m, data, right);
@@ -125,6 +221,7 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
     ground[k] = z;
     polygons[k] = SupportPolygon(loaded, options.sole_length, options.sole_width);
   }
+  if (!sole_paths.empty()) v = SampleVelocities(m, q, dt);
   out.zmp_before = ComputeMotionZmp(m, q, dt, ground);
   out.report.unsupported_samples_before = Unsupported(out.zmp_before);
   const ErrorStats before = Errors(out.zmp_before, out.zmp_reference);
@@ -153,7 +250,45 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
       const Eigen::Vector3d heading = left_pose[k].rotation().col(0) + right_pose[k].rotation().col(0);
       waist[k] = Eigen::AngleAxisd(std::atan2(heading.y(), heading.x()), Eigen::Vector3d::UnitZ()).toRotationMatrix();
     }
+    // Moves sample k's COM to `target`: with contact timing the soles, base orientation and height of its
+    // placement, else the interpolated posture's soles and orientation (or the upright waist).
+    const auto Shift = [&](std::size_t k, const Eigen::Vector2d& target) {
+      if (!placed.empty()) {
+        const Placement& p = placed[k];
+        const PelvisPoseResult r = placement.Solve(q[k], target, p.R_base, p.base_height, p.left, p.right);
+        return ComShiftResult{r.q, r.sole_error, r.com_error};
+      }
+      return upright ? shift.Solve(interpolated[k], target, waist[k]) : shift.Solve(interpolated[k], target);
+    };
     ending = "stopped after max_iterations = " + std::to_string(options.max_iterations);
+    if (options.cart_table_start) {
+      // Pass 0: the offsets that make the cart-table ZMP of the posture's COM, x - (z_c / g) x'', equal the
+      // reference, applied in full. The interpolated postures' static COM can be far from any COM that realises
+      // the reference (with contact timing it crosses to the next foot during the swing), and the full-model
+      // passes below, with their step fraction, start from there instead of walking that distance in halves.
+      const double g = -m.gravity().z();
+      Eigen::MatrixXd error(rows, 2);
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(n - 1, k + 1);
+        Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();
+        if (b - a == 2) acceleration = (com_start[b] - 2.0 * com_start[k] + com_start[a]) / (dt * dt);
+        const Eigen::Vector2d cart_table_zmp = com_start[k] - (com_height / g) * acceleration;
+        error.row(static_cast<Eigen::Index>(k)) = (out.zmp_reference[k] - cart_table_zmp).transpose();
+      }
+      offsets.col(0) = stabilizer->ComOffsets(error.col(0), dt, com_height);
+      offsets.col(1) = stabilizer->ComOffsets(error.col(1), dt, com_height);
+      double ik_error = 0.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Eigen::Vector2d target = com_start[k] + offsets.row(static_cast<Eigen::Index>(k)).transpose();
+        const ComShiftResult shifted = Shift(k, target);
+        q[k] = shifted.q;
+        ik_error = std::max(ik_error, shifted.sole_error);
+      }
+      zmp = ComputeMotionZmp(m, q, dt, ground);
+      out.report.unsupported_samples_after = Unsupported(zmp);
+      best = Errors(zmp, out.zmp_reference);
+      out.report.max_ik_error = ik_error;
+    }
     for (int pass = 1; pass <= options.max_iterations; ++pass) {
       if (best.rms < options.tolerance) {
         ending = "converged below " + Millimetres(options.tolerance);
@@ -181,8 +316,7 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
       double ik_error = 0.0;
       for (std::size_t k = 0; k < n; ++k) {
         const Eigen::Vector2d target = com_start[k] + trial.row(static_cast<Eigen::Index>(k)).transpose();
-        const ComShiftResult shifted = upright ? shift.Solve(interpolated[k], target, waist[k])
-                                               : shift.Solve(interpolated[k], target);
+        const ComShiftResult shifted = Shift(k, target);
         q_trial[k] = shifted.q;
         ik_error = std::max(ik_error, shifted.sole_error);
       }

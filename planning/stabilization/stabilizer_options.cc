@@ -45,6 +45,7 @@ void ValidateStabilizerOptions(const StabilizerOptions& o) {
   CheckRange("preview_time", o.preview_time, 0.0, 5.0, true, " s");
   CheckRange("preview_q", o.preview_q, 0.0, 1e12, true, "");
   CheckRange("preview_r", o.preview_r, 0.0, 1e12, true, "");
+  CheckRange("crouch", o.crouch, 0.0, 0.3, false, " m");
   CheckRange("fft_padding", o.fft_padding, 0.0, 10.0, false, " s");
   CheckRange("sole_length", o.sole_length, 0.0, 2.0, true, " m");
   CheckRange("sole_width", o.sole_width, 0.0, 2.0, true, " m");

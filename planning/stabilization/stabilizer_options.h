@@ -19,12 +19,20 @@ struct StabilizerOptions {
   double control_period{0.005};
   /// False (the thesis): the optimiser's waypoints are interpolated at their own times and the reference ZMP is
   /// their interpolated COM projection. True: the knots are re-timed to the plan's contact events (the swing foot
-  /// leaves the ground at lift-off, not at the stance's start) and the reference ZMP stays over the stance foot
-  /// until touch-down (MakeInterpolationKnots). Measured on the flat test trajectory, the compensation converges
-  /// far better without it (RMS 578 -> 43 mm against 612 -> 265 mm): at touch-down the re-timed reference asks for
-  /// the COM over the old stance foot while the optimiser's posture has it over the new one, further than the legs
-  /// reach. See docs/stabilization.md.
+  /// leaves the ground at lift-off, not at the stance's start), the reference ZMP stays over the stance foot until
+  /// touch-down (MakeInterpolationKnots), and every sample is rebuilt by PelvisPoseSolver: soles still on the
+  /// ground in double support, the swing sole on a minimum-jerk path with the mid-swing waypoint's apex, the waist
+  /// at its orientation (see waist_orientation) and `crouch` below the interpolated height. Without the thesis'
+  /// timing the reference ZMP leaves the stance foot in the second half of every swing, and no walk in the plant
+  /// survives it; with contact timing, crouch 0.06 m, an upright waist and cart_table_start the compensation
+  /// converges to a ZMP inside the support polygons and the four-step test plan is walked (docs/stabilization.md).
   bool contact_timing{false};
+  /// Start the compensation from the COM that the cart-table model (x - (z_c / g) x'' = p_ref) says realises the
+  /// reference ZMP, applied in full, before the full-model passes.
+  bool cart_table_start{false};
+  /// With contact timing: lower the waist by this much below the interpolated postures' (m, in [0, 0.3]); bent
+  /// knees keep the legs away from their stretched singularity while the COM moves between the feet.
+  double crouch{0.0};
   /// Compensation passes (each: ZMP from the full model, COM offsets, leg IK), in [1, 100].
   int max_iterations{8};
   /// Fraction of each pass's COM offsets applied, in (0, 1]: the full model is far from the linear ZMP equation
