@@ -34,6 +34,9 @@ void DefinePlanningStabilization(py::module_ m) {
       .def_readwrite("interpolation", &StabilizerOptions::interpolation, "'hermite' or 'spline'.")
       .def_readwrite("control_period", &StabilizerOptions::control_period, "Sampling period, s.")
       .def_readwrite("contact_timing", &StabilizerOptions::contact_timing, "Re-time knots to contact events.")
+      .def_readwrite("cart_table_start", &StabilizerOptions::cart_table_start,
+                     "Start from the cart-table COM of the reference ZMP.")
+      .def_readwrite("crouch", &StabilizerOptions::crouch, "With contact timing: lower the waist by this (m).")
       .def_readwrite("max_iterations", &StabilizerOptions::max_iterations, "Compensation passes.")
       .def_readwrite("step_fraction", &StabilizerOptions::step_fraction, "Fraction of each pass's offsets applied.")
       .def_readwrite("tolerance", &StabilizerOptions::tolerance, "RMS ZMP error to stop at, m.")

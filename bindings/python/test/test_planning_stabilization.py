@@ -92,3 +92,14 @@ def test_the_system_stabilises_in_an_event(model):
     assert not system.get_reference_output_port().Eval(context).report.success
     system.ExecuteForcedEvents(context)
     assert system.get_reference_output_port().Eval(context).report.success
+
+
+def test_walking_options_are_validated(model):
+    options = planning.StabilizerOptions()
+    options.contact_timing = True
+    options.cart_table_start = True
+    options.crouch = 0.06
+    assert options.cart_table_start and abs(options.crouch - 0.06) < 1e-12
+    options.crouch = 0.5
+    with pytest.raises(ValueError, match="crouch 0.5 m must be in"):
+        planning.Stabilizer(model, options)
