@@ -260,6 +260,17 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
       }
       return upright ? shift.Solve(interpolated[k], target, waist[k]) : shift.Solve(interpolated[k], target);
     };
+    // Every sample moved by its row of `offsets` into `moved`; returns the largest sole error.
+    const auto ShiftAll = [&](const Eigen::MatrixXd& offsets_xy, std::vector<Eigen::VectorXd>* moved) {
+      double ik_error = 0.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const ComShiftResult shifted =
+            Shift(k, com_start[k] + offsets_xy.row(static_cast<Eigen::Index>(k)).transpose());
+        (*moved)[k] = shifted.q;
+        ik_error = std::max(ik_error, shifted.sole_error);
+      }
+      return ik_error;
+    };
     ending = "stopped after max_iterations = " + std::to_string(options.max_iterations);
     if (options.cart_table_start) {
       // Pass 0: the offsets that make the cart-table ZMP of the posture's COM, x - (z_c / g) x'', equal the
@@ -277,13 +288,7 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
       }
       offsets.col(0) = stabilizer->ComOffsets(error.col(0), dt, com_height);
       offsets.col(1) = stabilizer->ComOffsets(error.col(1), dt, com_height);
-      double ik_error = 0.0;
-      for (std::size_t k = 0; k < n; ++k) {
-        const Eigen::Vector2d target = com_start[k] + offsets.row(static_cast<Eigen::Index>(k)).transpose();
-        const ComShiftResult shifted = Shift(k, target);
-        q[k] = shifted.q;
-        ik_error = std::max(ik_error, shifted.sole_error);
-      }
+      const double ik_error = ShiftAll(offsets, &q);
       zmp = ComputeMotionZmp(m, q, dt, ground);
       out.report.unsupported_samples_after = Unsupported(zmp);
       best = Errors(zmp, out.zmp_reference);
@@ -313,13 +318,7 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
       trial.col(0) += fraction * stabilizer->ComOffsets(error.col(0), dt, com_height);
       trial.col(1) += fraction * stabilizer->ComOffsets(error.col(1), dt, com_height);
       std::vector<Eigen::VectorXd> q_trial(n);
-      double ik_error = 0.0;
-      for (std::size_t k = 0; k < n; ++k) {
-        const Eigen::Vector2d target = com_start[k] + trial.row(static_cast<Eigen::Index>(k)).transpose();
-        const ComShiftResult shifted = Shift(k, target);
-        q_trial[k] = shifted.q;
-        ik_error = std::max(ik_error, shifted.sole_error);
-      }
+      const double ik_error = ShiftAll(trial, &q_trial);
       const std::vector<Eigen::Vector2d> zmp_trial = ComputeMotionZmp(m, q_trial, dt, ground);
       const int unsupported = Unsupported(zmp_trial);
       const ErrorStats stats = Errors(zmp_trial, out.zmp_reference);
