@@ -82,7 +82,8 @@ void Context::CopyValuesFrom(const Context& source) {
     xc_storage_->segment(xc_offset_, xc_size_) = source.xc_storage_->segment(source.xc_offset_, xc_size_);
   }
   xd_.SetFrom(source.xd_);
-  for (std::size_t i = 0; i < xa_.size(); ++i) xa_[i]->SetFrom(*source.xa_[i]);
+  // A fresh copy, not SetFrom(): this context's value may be shared with a State cloned from it.
+  for (std::size_t i = 0; i < xa_.size(); ++i) xa_[i] = source.xa_[i]->Clone();
   for (std::size_t i = 0; i < pn_.size(); ++i) pn_[i] = source.pn_[i];
   for (std::size_t i = 0; i < pa_.size(); ++i) pa_[i]->SetFrom(*source.pa_[i]);
   for (std::size_t i = 0; i < inputs_.size(); ++i) {
@@ -201,10 +202,7 @@ State Context::CloneState() const {
     throw std::logic_error("CloneState() applies to leaf contexts; '" + system_path_name_ +
                            "' is a diagram. Use diagram.GetSubsystemContext(subsystem, context).");
   }
-  std::vector<std::unique_ptr<AbstractValue>> abstract;
-  abstract.reserve(xa_.size());
-  for (const auto& value : xa_) abstract.push_back(value->Clone());
-  return State(get_continuous_state_vector(), xd_, std::move(abstract));
+  return State(get_continuous_state_vector(), xd_, xa_);  // abstract values shared copy-on-write
 }
 
 void Context::SetState(const State& state) {
@@ -220,8 +218,10 @@ void Context::SetState(const State& state) {
   }
   xd_.SetFrom(state.discrete_state());
   for (int ticket : xd_tickets_) NoteChange(ticket, change_event);
-  for (int i = 0; i < num_abstract_states(); ++i) {
-    xa_[i]->SetFrom(state.abstract_state_value(i));
+  // A value the state still shares with this context was not touched: its dependents' caches stay valid.
+  for (std::size_t i = 0; i < xa_.size(); ++i) {
+    if (state.abstract_[i] == xa_[i]) continue;
+    xa_[i] = state.abstract_[i];  // shared copy-on-write, as CloneState() does
     NoteChange(xa_tickets_[i], change_event);
   }
 }
@@ -234,7 +234,9 @@ const AbstractValue& Context::get_abstract_state_value(int index) const {
 AbstractValue& Context::get_mutable_abstract_state_value(int index) {
   ThrowIfNotLeafState("abstract state", index, num_abstract_states());
   NoteChange(xa_tickets_[index]);
-  return *xa_[index];
+  std::shared_ptr<AbstractValue>& value = xa_[static_cast<std::size_t>(index)];
+  if (value.use_count() > 1) value = value->Clone();  // still shared with a State cloned from this context
+  return *value;
 }
 
 const Eigen::VectorXd& Context::get_numeric_parameter(int index) const {

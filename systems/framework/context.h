@@ -72,7 +72,9 @@ class Context {
 
   /// A copy of this leaf context's whole state (as unrestricted update events receive it).
   State CloneState() const;
-  /// Sets this leaf context's whole state; `state` must have the structure CloneState() gives.
+  /// Sets this leaf context's whole state; `state` must have the structure CloneState() gives. An abstract value
+  /// `state` still shares with this context (cloned and not written since) is left as it is, so what depends only
+  /// on it keeps its cached values.
   void SetState(const State& state);
 
   // ---------------------------------------------------------------------------------------------------------------
@@ -170,7 +172,9 @@ class Context {
 
   DiscreteValues xd_;
   std::vector<int> xd_tickets_;
-  std::vector<std::unique_ptr<AbstractValue>> xa_;
+  // Shared copy-on-write with States cloned from this context (see State); never with another context, so a
+  // context and its clones stay independent across threads.
+  std::vector<std::shared_ptr<AbstractValue>> xa_;
   std::vector<int> xa_tickets_;
   std::vector<Eigen::VectorXd> pn_;
   std::vector<int> pn_tickets_;

@@ -8,7 +8,7 @@
 namespace cairn::systems {
 
 State::State(Eigen::VectorXd continuous, DiscreteValues discrete,
-             std::vector<std::unique_ptr<AbstractValue>> abstract)
+             std::vector<std::shared_ptr<AbstractValue>> abstract)
     : continuous_(std::move(continuous)), discrete_(std::move(discrete)), abstract_(std::move(abstract)) {}
 
 const AbstractValue& State::abstract_state_value(int index) const {
@@ -20,7 +20,10 @@ const AbstractValue& State::abstract_state_value(int index) const {
 }
 
 AbstractValue& State::get_mutable_abstract_state_value(int index) {
-  return const_cast<AbstractValue&>(static_cast<const State*>(this)->abstract_state_value(index));
+  abstract_state_value(index);  // validates the index
+  std::shared_ptr<AbstractValue>& value = abstract_[static_cast<std::size_t>(index)];
+  if (value.use_count() > 1) value = value->Clone();
+  return *value;
 }
 
 }  // namespace cairn::systems

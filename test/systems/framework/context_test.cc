@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -41,6 +42,51 @@ TEST(ContextTest, CloneCopiesEveryValueIndependently) {
   EXPECT_EQ(context->get_discrete_state(0), Eigen::Vector2d::Zero());
   EXPECT_EQ(system.get_output_port(0).Eval<Eigen::VectorXd>(*context),
             system.get_output_port(0).Eval<Eigen::VectorXd>(*clone));
+}
+
+// An abstract state of doubles and an output that reads only it.
+class AbstractHolder final : public LeafSystem {
+ public:
+  AbstractHolder() {
+    const int index = DeclareAbstractState(Value<std::vector<double>>(std::vector<double>(3, 1.0)));
+    DeclareAbstractOutputPort(
+        "y", Value<std::vector<double>>(),
+        [index](const Context& c, AbstractValue* y) { y->SetFrom(c.get_abstract_state_value(index)); },
+        {abstract_state_ticket(index)});
+  }
+};
+
+TEST(ContextTest, ClonedStatesShareAbstractValuesUntilOneSideWrites) {
+  AbstractHolder system;
+  auto context = system.CreateDefaultContext();
+  const OutputPort& y = system.get_output_port(0);
+  y.Eval<std::vector<double>>(*context);
+  ASSERT_EQ(context->num_calculations(system.output_port_ticket(0)), 1);
+
+  // A state that is cloned and handed back untouched changes nothing, so the output stays cached.
+  context->SetState(context->CloneState());
+  y.Eval<std::vector<double>>(*context);
+  EXPECT_EQ(context->num_calculations(system.output_port_ticket(0)), 1);
+
+  // Writing to the clone copies the value first: the context keeps its own until the state is set.
+  State next = context->CloneState();
+  next.get_mutable_abstract_state<std::vector<double>>(0)[1] = 7.0;
+  EXPECT_EQ(context->get_abstract_state<std::vector<double>>(0)[1], 1.0);
+  context->SetState(next);
+  EXPECT_EQ(y.Eval<std::vector<double>>(*context)[1], 7.0);
+  EXPECT_EQ(context->num_calculations(system.output_port_ticket(0)), 2);
+
+  // After SetState the two share again; writes on either side stay on that side.
+  next.get_mutable_abstract_state<std::vector<double>>(0)[1] = 8.0;
+  EXPECT_EQ(context->get_abstract_state<std::vector<double>>(0)[1], 7.0);
+  State later = context->CloneState();
+  context->get_mutable_abstract_state<std::vector<double>>(0)[2] = 9.0;
+  EXPECT_EQ(later.abstract_state<std::vector<double>>(0)[2], 1.0);
+  // A context clone never shares with its source.
+  auto clone = context->Clone();
+  clone->get_mutable_abstract_state<std::vector<double>>(0)[0] = 5.0;
+  EXPECT_EQ(context->get_abstract_state<std::vector<double>>(0)[0], 1.0);
+  EXPECT_EQ(later.abstract_state<std::vector<double>>(0)[0], 1.0);
 }
 
 TEST(ContextTest, StateAccessErrorsNameTheSystemAndTheFix) {
