@@ -8,6 +8,8 @@
 // Footstep plans come from the default oracle, loaded from (or built into) CAIRN_ORACLE_CACHE (default
 // /tmp/cairn-benchmark-oracles), with a 200 000-expansion budget so the plans do not depend on the machine.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -19,6 +21,10 @@
 #include <vector>
 
 #include <benchmark/benchmark.h>
+
+#include <Eigen/Geometry>
+
+#include <cairn/common/number_text.h>
 
 #include <cairn/multibody/urdf_parser.h>
 #include <cairn/planning/footstep/plan_footsteps.h>
@@ -77,7 +83,24 @@ const Scenario& GetScenario(const std::string& name) {
   return cache.emplace(name, std::move(s)).first->second;
 }
 
-void BM_WholeBody(benchmark::State& state, const std::string& name, const std::string& hessian, int window) {
+// The rotation of the floating base between consecutive waypoints, degrees: largest and mean.
+std::pair<double, double> WaistRotation(const WholeBodyTrajectory& trajectory) {
+  double largest = 0.0, sum = 0.0;
+  for (std::size_t i = 1; i < trajectory.waypoints.size(); ++i) {
+    const Eigen::VectorXd& a = trajectory.waypoints[i - 1].q;
+    const Eigen::VectorXd& b = trajectory.waypoints[i].q;
+    const double angle =
+        Eigen::Quaterniond(a(3), a(4), a(5), a(6)).angularDistance(Eigen::Quaterniond(b(3), b(4), b(5), b(6))) *
+        180.0 / M_PI;
+    largest = std::max(largest, angle);
+    sum += angle;
+  }
+  const auto segments = static_cast<double>(std::max<std::size_t>(1, trajectory.waypoints.size() - 1));
+  return {largest, sum / segments};
+}
+
+void BM_WholeBody(benchmark::State& state, const std::string& name, const std::string& hessian, int window,
+                  double rotation_weight) {
   const Scenario& scenario = GetScenario(name);
   if (!scenario.plan.found) {
     state.SkipWithError(("no footstep plan for " + name + ": " + scenario.plan.reason).c_str());
@@ -86,6 +109,7 @@ void BM_WholeBody(benchmark::State& state, const std::string& name, const std::s
   TrajectoryOptimizerOptions options;
   options.hessian = hessian;
   options.window_stances = window;
+  options.base_rotation_smoothness_weight = rotation_weight;
   WholeBodyTrajectory trajectory;
   for (auto _ : state) {
     trajectory = OptimizeWholeBodyTrajectory(Robot(), scenario.plan, scenario.environment, options);
@@ -101,17 +125,31 @@ void BM_WholeBody(benchmark::State& state, const std::string& name, const std::s
   state.counters["iterations"] = trajectory.report.iterations;
   state.counters["windows"] = trajectory.report.windows;
   state.counters["success"] = trajectory.report.success ? 1.0 : 0.0;
+  state.counters["torque_cost"] = trajectory.report.torque_cost;
+  state.counters["objective"] = trajectory.report.objective;
+  const auto [largest, mean] = WaistRotation(trajectory);
+  state.counters["waist_deg_max"] = largest;
+  state.counters["waist_deg_mean"] = mean;
   if (!trajectory.report.success) std::cerr << name << " (" << hessian << "): " << trajectory.report.message << "\n";
 }
 
 void Register() {
-  // Whole plan with either Hessian, and a receding window of 2 stances with the Hessian.
-  const std::vector<std::pair<std::string, int>> configurations = {
-      {"gauss-newton", 0}, {"exact", 0}, {"limited-memory", 0}, {"gauss-newton", 2}, {"exact", 2}};
+  // Whole plan with each Hessian, a receding window of 2 stances, and both with the waist-orientation smoothness
+  // term (base_rotation_smoothness_weight) at 0.1, 1 and 10.
+  struct Configuration {
+    std::string hessian;
+    int window;
+    double rotation_weight;
+  };
+  const std::vector<Configuration> configurations = {
+      {"gauss-newton", 0, 0.0}, {"exact", 0, 0.0}, {"limited-memory", 0, 0.0}, {"gauss-newton", 2, 0.0},
+      {"exact", 2, 0.0},        {"exact", 2, 0.1}, {"exact", 2, 1.0},          {"exact", 2, 10.0},
+      {"exact", 0, 1.0}};
   for (const std::string name : {"flat", "ice_narrow_012"}) {
-    for (const auto& [hessian, window] : configurations) {
-      benchmark::RegisterBenchmark(("BM_WholeBody/" + name + "/" + hessian + "/window:" + std::to_string(window)).c_str(),
-                                   BM_WholeBody, name, hessian, window)
+    for (const Configuration& c : configurations) {
+      const std::string label = "BM_WholeBody/" + name + "/" + c.hessian + "/window:" + std::to_string(c.window) +
+                                "/rotation_weight:" + cairn::FormatShort(c.rotation_weight);
+      benchmark::RegisterBenchmark(label.c_str(), BM_WholeBody, name, c.hessian, c.window, c.rotation_weight)
           ->Unit(benchmark::kSecond)
           ->Iterations(1);
     }

@@ -218,23 +218,30 @@ void CollisionPenalty::DoEvalHessian(const Eigen::Ref<const Eigen::VectorXd>& x,
     }
     return;
   }
-  if (!sample_) {
-    HessianByDifferences(*this, x, weights, hessian_pattern(), hessian_values);
-    return;
-  }
-  // f(q_a, q_b) = g((1 - s) q_a + s q_b): differentiate g once at the blended point and scale its blocks, half
-  // the Jacobian evaluations of differencing over both waypoints.
+  // Differences of the analytic gradient, over the columns that move a body of a pair or ground point within its
+  // margin only: the other pairs are zero near x and every term depends on its bodies' poses alone, so the other
+  // rows and columns of the Hessian are exactly zero (most waypoints have no active term at all, and a head near
+  // a bar moves with the base and the spine, not the legs).
   const int nq = model_->nq();
-  const Eigen::VectorXd blended = (1.0 - fraction_) * x.head(nq) + fraction_ * x.tail(nq);
-  Eigen::VectorXd stacked(2 * nq);
-  stacked << blended, blended;
-  // The gradient of f at (blended, blended) is ((1 - s) grad g, s grad g), so differencing f along the first block
-  // only, with weights divided by (1 - s), gives Hessian(g) there.
-  std::vector<int> first(static_cast<std::size_t>(nq));
-  for (int i = 0; i < nq; ++i) first[static_cast<std::size_t>(i)] = i;
-  const std::vector<optimization::SparsityEntry> block = LowerTrianglePattern(first);
+  const Eigen::VectorXd q_raw = sample_ ? Eigen::VectorXd((1.0 - fraction_) * x.head(nq) + fraction_ * x.tail(nq))
+                                        : Eigen::VectorXd(x);
+  hessian_values.setZero();
+  const std::vector<int> columns = ActiveColumns(chart_.Normalized(q_raw));
+  if (columns.empty()) return;
+  // f(q_a, q_b) = g((1 - s) q_a + s q_b): differentiate g once at the blended point and scale its blocks, half
+  // the Jacobian evaluations of differencing over both waypoints. The gradient of f at (blended, blended) is
+  // ((1 - s) grad g, s grad g), so differencing f along the first block only, with weights divided by (1 - s)^2,
+  // gives Hessian(g) there.
+  Eigen::VectorXd point(num_inputs());
+  if (sample_) {
+    point << q_raw, q_raw;
+  } else {
+    point = q_raw;
+  }
+  const double scale = sample_ ? 1.0 / ((1.0 - fraction_) * (1.0 - fraction_)) : 1.0;
+  const std::vector<optimization::SparsityEntry> block = LowerTrianglePattern(columns);
   Eigen::VectorXd g_values(static_cast<Eigen::Index>(block.size()));
-  HessianByDifferences(*this, stacked, weights / ((1.0 - fraction_) * (1.0 - fraction_)), block, g_values);
+  HessianByDifferences(*this, point, scale * weights, block, g_values, DifferenceScheme::kCentral);
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(nq, nq);
   for (std::size_t k = 0; k < block.size(); ++k) {
     H(block[k].row, block[k].col) = H(block[k].col, block[k].row) = g_values(static_cast<Eigen::Index>(k));
@@ -242,9 +249,33 @@ void CollisionPenalty::DoEvalHessian(const Eigen::Ref<const Eigen::VectorXd>& x,
   const std::vector<optimization::SparsityEntry>& pattern = hessian_pattern();
   for (std::size_t k = 0; k < pattern.size(); ++k) {
     const int r = pattern[k].row, c = pattern[k].col;
-    const double wr = r < nq ? 1.0 - fraction_ : fraction_, wc = c < nq ? 1.0 - fraction_ : fraction_;
+    const double wr = !sample_ ? 1.0 : r < nq ? 1.0 - fraction_ : fraction_;
+    const double wc = !sample_ ? 1.0 : c < nq ? 1.0 - fraction_ : fraction_;
     hessian_values(static_cast<Eigen::Index>(k)) = wr * wc * H(r % nq, c % nq);
   }
+}
+
+std::vector<int> CollisionPenalty::ActiveColumns(const Eigen::VectorXd& q) const {
+  multibody::Data data(*model_);
+  std::set<int> bodies;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (const WeightedPair& p : Pairs(q, &data)) {
+      for (const int geometry : {p.pair.geometry_a, p.pair.geometry_b}) {
+        const int body = world_.geometry_body(geometry);
+        if (body >= 0) bodies.insert(body);
+      }
+    }
+  }
+  for (const GroundPoint& point : ground_points_) {
+    const Eigen::Vector3d p_W = data.X_world[static_cast<std::size_t>(point.body)] * point.p_B;
+    if (d_safe_ - (p_W.z() - point.radius - ground_height_) > 0.0) bodies.insert(point.body);
+  }
+  std::set<int> columns;
+  for (const int body : bodies) {
+    for (const int c : chart_.CoordinatesMovingBody(*model_, body)) columns.insert(c);
+  }
+  return {columns.begin(), columns.end()};
 }
 
 Eigen::VectorXd CollisionPenalty::Configuration(const Eigen::Ref<const Eigen::VectorXd>& x) const {

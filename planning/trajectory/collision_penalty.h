@@ -51,8 +51,9 @@ struct EnvironmentBox {
 /// (inputs: [q_a; q_b], 2 nq): q = (1 - fraction) q_a + fraction q_b, the quaternion renormalised. Samples
 /// between knots keep a swing foot from passing through an edge where no waypoint looks.
 ///
-/// The Hessian is one of two (CollisionHessian): central differences of the analytic gradient
-/// (HessianByDifferences; across the hinge's kink at d = m the one-sided curvature, as for any C^1 penalty), or
+/// The Hessian is one of two (CollisionHessian): central differences of the analytic gradient (HessianByDifferences; across
+/// the hinge's kink at d = m the one-sided curvature, as for any C^1 penalty) over the columns that move a body of
+/// a term within its margin (none, and no work, when nothing is within its margin), or
 /// the Gauss-Newton matrix 2 sum_p J_p' J_p over the pairs and ground points within their margin, J_p the
 /// coordinate Jacobian of their distance: the penalty is a sum of squared hinges, so this drops only the
 /// curvature of d itself (and of the quaternion chart), is positive semidefinite, and costs one gradient
@@ -121,6 +122,8 @@ class CollisionPenalty final : public optimization::Evaluator {
   // waypoint, or a sample's blended point), nq x nq.
   Eigen::MatrixXd GaussNewtonHessian(const Eigen::VectorXd& q_raw) const;
   double GroundDistance(const multibody::Data& data, std::string* which) const;
+  // The q columns (sorted) that move a robot body of a pair or ground point within its margin at q (normalised).
+  std::vector<int> ActiveColumns(const Eigen::VectorXd& q) const;
 
   std::shared_ptr<const multibody::Model> model_;
   ConfigurationChart chart_;

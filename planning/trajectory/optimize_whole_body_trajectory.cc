@@ -12,6 +12,7 @@
 #include <cairn/multibody/data.h>
 #include <cairn/optimization/solvers/make_solver.h>
 #include <cairn/optimization/solvers/solver.h>
+#include <cairn/planning/trajectory/configuration_chart.h>
 #include <cairn/planning/trajectory/trajectory_problem.h>
 #include <cairn/planning/trajectory/waypoint_spec.h>
 
@@ -63,6 +64,8 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
   const auto total = static_cast<int>(specs.size());
 
   std::optional<TrajectoryProblem::FixedWaypoint> previous;
+  const ConfigurationChart chart(*model);
+  std::vector<Eigen::VectorXd> carried;  // the previous window's solution past the waypoints it kept
   bool success = true;
   std::vector<RowViolation> worst;
   for (int stance = 0; stance < num_stances; ++stance) {
@@ -72,7 +75,16 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
     std::vector<WaypointSpec> window_specs(specs.begin() + first, specs.begin() + last);
     const TrajectoryProblem problem(model, window_specs, environment, options, previous);
     if (out.coordinate_names.empty()) out.coordinate_names = problem.coordinate_names();
-    const Eigen::VectorXd guess = problem.DecisionVector(problem.WarmStart());
+    // Warm start: the previous window's solution where the windows overlap, inverse kinematics beyond.
+    std::vector<Eigen::VectorXd> start_q = problem.WarmStart();
+    for (std::size_t i = 0; i < carried.size() && i < start_q.size(); ++i) start_q[i] = carried[i];
+    if (chart.has_floating_base()) {
+      for (std::size_t i = 0; i < start_q.size(); ++i) {
+        const Eigen::VectorXd& before = i > 0 ? start_q[i - 1] : (previous ? previous->q : start_q[i]);
+        if (start_q[i].segment<4>(3).dot(before.segment<4>(3)) < 0.0) start_q[i].segment<4>(3) *= -1.0;
+      }
+    }
+    const Eigen::VectorXd guess = problem.DecisionVector(start_q);
     const auto start = std::chrono::steady_clock::now();
     const optimization::SolverResult result = solver->Solve(problem.program(), guess, MakeSolverOptions(*solver, options));
     out.report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -124,9 +136,12 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
       multibody::Data data(*model);
       w.com = multibody::CenterOfMass(*model, data, w.q);
       w.min_clearance = problem.MinimumClearance(result.x, i);
+      out.report.torque_cost += problem.TorqueCost(result.x, i);
       out.waypoints.push_back(std::move(w));
     }
     if (final_window) break;
+    carried.clear();
+    for (int i = keep; i < problem.num_waypoints(); ++i) carried.push_back(problem.WaypointConfiguration(result.x, i));
     previous = TrajectoryProblem::FixedWaypoint{problem.spec(keep - 1), problem.WaypointConfiguration(result.x, keep - 1)};
   }
   out.report.hessian = solver->options_key() == "ipopt" ? options.hessian : "solver's own";

@@ -50,9 +50,18 @@ std::vector<int> AllColumns(const std::shared_ptr<const multibody::Model>& model
 StaticTorqueResidual::StaticTorqueResidual(std::shared_ptr<const multibody::Model> model,
                                            const std::vector<TorqueSupport>& supports, const Eigen::VectorXd& scale)
     : WaypointEvaluator("static_torques", model, NumJoints(model, supports, scale), AllColumns(model)), scale_(scale) {
+  const multibody::Model& m = this->model();
   for (const TorqueSupport& s : supports) {
-    frames_.push_back(this->model().GetFrameIndex(s.frame));
+    frames_.push_back(m.GetFrameIndex(s.frame));
     shares_.push_back(s.share);
+    const int body = m.frame(frames_.back()).body;
+    std::vector<char> carries(static_cast<std::size_t>(m.nv()));
+    for (int k = 0; k < m.nv(); ++k) carries[static_cast<std::size_t>(k)] = m.IsAncestorOrSelf(m.velocity_joint(k), body);
+    carries_support_.push_back(std::move(carries));
+  }
+  moves_axis_ = Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic>(m.nv(), m.nv());
+  for (int k = 0; k < m.nv(); ++k) {
+    for (int j = 0; j < m.nv(); ++j) moves_axis_(k, j) = m.IsAncestorOrSelf(m.velocity_joint(j), m.velocity_joint(k));
   }
 }
 
@@ -84,16 +93,14 @@ void StaticTorqueResidual::EvalTangent(const Eigen::VectorXd& q, Eigen::Ref<Eige
   Eigen::MatrixXd J_c(6, nv);
   for (std::size_t c = 0; c < frames_.size(); ++c) {
     multibody::FrameJacobian(m, data, frames_[c], multibody::ReferenceFrame::kWorld, J_c);
-    const int body = m.frame(frames_[c]).body;
     for (int k = 0; k < nv; ++k) {
-      const int joint_k = m.velocity_joint(k);
-      if (!m.IsAncestorOrSelf(joint_k, body)) continue;
+      if (!carries_support_[c][static_cast<std::size_t>(k)]) continue;
       const multibody::Vector6d S_k = J_c.col(k);
       tau(k) -= shares_[c] * S_k.dot(W);
       if (J_v == nullptr) continue;
       for (int j = 0; j < nv; ++j) {
         double d = S_k.head<3>().dot(Eigen::Vector3d(data.com_jacobian.col(j)).cross(f));
-        if (m.IsAncestorOrSelf(m.velocity_joint(j), joint_k)) {
+        if (moves_axis_(k, j)) {
           const multibody::Vector6d S_j = data.joint_motion_world.col(j);
           d += multibody::CrossMotion(S_j, S_k).dot(W);
         }

@@ -47,6 +47,10 @@ class StaticTorqueResidual final : public WaypointEvaluator {
 
   std::vector<int> frames_;
   std::vector<double> shares_;
+  // Per support, per velocity coordinate k: does joint k lie on the chain from the root to the support's body.
+  std::vector<std::vector<char>> carries_support_;
+  // (k, j): does coordinate j's joint move joint k's axis (is it an ancestor of, or, joint k).
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> moves_axis_;
   Eigen::VectorXd scale_;
 };
 

@@ -26,6 +26,8 @@ void ValidateTrajectoryOptimizerOptions(const TrajectoryOptimizerOptions& o) {
           "finite and > 0");
   Require(o.smoothness_weight >= 0.0 && std::isfinite(o.smoothness_weight), "smoothness_weight",
           o.smoothness_weight, "finite and >= 0");
+  Require(o.base_rotation_smoothness_weight >= 0.0 && std::isfinite(o.base_rotation_smoothness_weight),
+          "base_rotation_smoothness_weight", o.base_rotation_smoothness_weight, "finite and >= 0");
   Require(o.posture_weight >= 0.0 && std::isfinite(o.posture_weight), "posture_weight", o.posture_weight,
           "finite and >= 0");
   Require(o.sole_length > 0.0 && o.sole_length <= 1.0, "sole_length", o.sole_length, "in (0, 1] m");

@@ -28,6 +28,11 @@ struct TrajectoryOptimizerOptions {
   /// the joints that barely change the torques (wrists, neck) well determined, so the solver converges, and keeps
   /// them from swinging between waypoints. Small against the torque term (1 % of its weight).
   double smoothness_weight{1e-2};
+  /// Weight of the waist-orientation smoothness term sum_t |2 (quat_{t+1} - quat_t)|^2 over the floating base's
+  /// quaternion (BaseRotationChange; about theta^2 for a rotation of theta rad between consecutive waypoints, roll,
+  /// pitch and yaw together; not in eq. 2.9). Without it the waist's pitch and yaw are free wherever the torques
+  /// barely see them and swing by 20-25 degrees between waypoints. 0: off.
+  double base_rotation_smoothness_weight{0.0};
   /// Weight of the posture term sum_t |q_t - q_neutral|^2 over the joints (not in eq. 2.9; q_neutral is the
   /// model's zero posture): it pins the directions the torques do not see at all (an arm turning about its own
   /// axis), so a solution is isolated and every solver finds the same one.

@@ -13,6 +13,7 @@
 
 #include <cairn/common/number_text.h>
 #include <cairn/multibody/configuration.h>
+#include <cairn/planning/trajectory/base_rotation_change.h>
 #include <cairn/planning/trajectory/center_of_mass_projection.h>
 #include <cairn/planning/trajectory/frame_pose_error.h>
 #include <cairn/planning/trajectory/inverse_kinematics.h>
@@ -222,6 +223,11 @@ TrajectoryProblem::TrajectoryProblem(std::shared_ptr<const multibody::Model> mod
       Q.setFromTriplets(q_triplets.begin(), q_triplets.end());
       prog_.AddQuadraticCost(Q, Eigen::VectorXd::Zero(2 * model_ref.nq()), 0.0, both);
     }
+    if (options_.base_rotation_smoothness_weight > 0.0 && chart_.has_floating_base()) {
+      prog_.AddLeastSquaresCost(std::make_shared<ScaledEvaluator>(std::make_shared<BaseRotationChange>(),
+                                                                  std::sqrt(2.0 * options_.base_rotation_smoothness_weight)),
+                                optimization::DecisionVariables::Concatenate({qa.Segment(3, 4), qb.Segment(3, 4)}));
+    }
     for (int k = 1; k <= options_.samples_between; ++k) {
       const double fraction = static_cast<double>(k) / (options_.samples_between + 1);
       auto sample = std::make_shared<CollisionPenalty>("collision(" + a.label + " -> " + b.label + ")", model_, boxes,
@@ -331,6 +337,14 @@ std::vector<Eigen::VectorXd> TrajectoryProblem::WarmStart() const {
     }
     ik.SetPosture(guess);
     out.push_back(ik.Solve(guess).q);
+    // q and -q are the same pose; keep consecutive quaternions in one hemisphere so that the orientation
+    // smoothness term (BaseRotationChange, linear in the quaternions) measures the rotation between them.
+    if (chart_.has_floating_base()) {
+      const Eigen::VectorXd* before = out.size() > 1 ? &out[out.size() - 2] : (previous_ ? &previous_->q : nullptr);
+      if (before != nullptr && out.back().segment<4>(3).dot(before->segment<4>(3)) < 0.0) {
+        out.back().segment<4>(3) *= -1.0;
+      }
+    }
   }
   return out;
 }
@@ -390,6 +404,11 @@ double TrajectoryProblem::MinimumSampleClearance(const Eigen::Ref<const Eigen::V
 
 Eigen::VectorXd TrajectoryProblem::JointTorques(const Eigen::Ref<const Eigen::VectorXd>& x, int i) const {
   return torques_.at(static_cast<std::size_t>(i))->JointTorques(Gather(x, vars_[static_cast<std::size_t>(i)]));
+}
+
+double TrajectoryProblem::TorqueCost(const Eigen::Ref<const Eigen::VectorXd>& x, int i) const {
+  const std::size_t k = static_cast<std::size_t>(i);
+  return options_.torque_weight * torques_.at(k)->Eval(Gather(x, vars_.at(k))).squaredNorm();
 }
 
 }  // namespace cairn::planning

@@ -32,7 +32,8 @@ struct RowViolation {
 /// Costs: sum_t torque_weight |tau(q_t) / tau_max|^2 (StaticTorqueResidual as a least-squares cost) and
 /// collision_weight times the hinge penalty (CollisionPenalty) at every waypoint and at samples_between points
 /// between consecutive waypoints, plus the regularisers posture_weight |q_t|^2 and smoothness_weight
-/// |q_{t+1} - q_t|^2 over the joint coordinates. Constraints per waypoint: the 6-D pose error of each contact (6 rows per
+/// |q_{t+1} - q_t|^2 over the joint coordinates, and with base_rotation_smoothness_weight > 0 that weight times
+/// |2 (quat_{t+1} - quat_t)|^2 over the floating base's quaternion (BaseRotationChange). Constraints per waypoint: the 6-D pose error of each contact (6 rows per
 /// contact, = 0), the COM inside the support polygon (one row per edge, <= b - margin), the waist roll (= 0),
 /// |quat|^2 = 1; between consecutive waypoints the joint speed limits |q_{t+1} - q_t| <= v_max (t_{t+1} - t_t)
 /// (linear rows); joint limits are variable bounds. Every row block touches one waypoint's variables, or two for
@@ -87,6 +88,9 @@ class TrajectoryProblem {
 
   /// The unscaled static joint torques at free waypoint i (joint coordinate order of the chart).
   Eigen::VectorXd JointTorques(const Eigen::Ref<const Eigen::VectorXd>& x, int i) const;
+
+  /// The torque term of free waypoint i at x: torque_weight |tau / tau_max|^2 (the cost of eq. 2.10 as weighted).
+  double TorqueCost(const Eigen::Ref<const Eigen::VectorXd>& x, int i) const;
 
   /// Names of the q coordinates: "base_x", "base_y", "base_z", "base_qw".."base_qz", then the joints.
   const std::vector<std::string>& coordinate_names() const { return coordinate_names_; }

@@ -17,7 +17,7 @@ namespace cairn::planning {
 ///
 /// Subclasses implement EvalTangent (value and rows x nv tangent Jacobian at the normalised q); this class
 /// evaluates it, maps the Jacobian through the chart and writes the declared pattern's entries. The Hessian
-/// (lower triangle over the same columns) comes from central differences of that analytic Jacobian
+/// (lower triangle over the same columns) comes from forward differences of that analytic Jacobian
 /// (HessianByDifferences), for Ipopt's exact-Hessian mode. Each call makes
 /// its own multibody::Data, so the evaluators hold no mutable state and are safe to share between threads.
 class WaypointEvaluator : public optimization::Evaluator {

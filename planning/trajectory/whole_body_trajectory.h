@@ -36,7 +36,9 @@ struct TrajectorySolveReport {
   int iterations{0};                ///< solver iterations summed over windows
   int windows{0};                   ///< problems solved (1 for the whole plan)
   double seconds{0.0};              ///< wall time of the solves, s
-  double objective{0.0};            ///< torque cost plus collision penalty at the solution (summed over windows)
+  double objective{0.0};            ///< the program's objective at the solution (summed over windows): torque cost,
+                                    ///< collision penalty and the regularisers
+  double torque_cost{0.0};          ///< the torque term alone, summed over the returned waypoints
   int num_variables{0};             ///< of the largest problem solved
   int num_constraints{0};           ///< rows of the largest problem solved
   int jacobian_nonzeros{0};         ///< structural nonzeros of its constraint Jacobian

@@ -53,6 +53,8 @@ void DefinePlanningTrajectory(py::module_ m) {
       .def_readwrite("samples_between", &TrajectoryOptimizerOptions::samples_between, "Collision samples.")
       .def_readwrite("torque_weight", &TrajectoryOptimizerOptions::torque_weight, "Torque cost weight.")
       .def_readwrite("smoothness_weight", &TrajectoryOptimizerOptions::smoothness_weight, "Smoothness weight.")
+      .def_readwrite("base_rotation_smoothness_weight", &TrajectoryOptimizerOptions::base_rotation_smoothness_weight,
+                     "Weight of the waist-orientation change between waypoints (0: off).")
       .def_readwrite("posture_weight", &TrajectoryOptimizerOptions::posture_weight, "Posture weight.")
       .def_readwrite("com_margin", &TrajectoryOptimizerOptions::com_margin, "COM margin, m.")
       .def_readwrite("ground_height", &TrajectoryOptimizerOptions::ground_height, "Ground plane, m (NaN: none).")
@@ -83,6 +85,7 @@ void DefinePlanningTrajectory(py::module_ m) {
       .def_readonly("windows", &TrajectorySolveReport::windows, "Problems solved.")
       .def_readonly("seconds", &TrajectorySolveReport::seconds, "Wall time of the solves.")
       .def_readonly("objective", &TrajectorySolveReport::objective, "Objective at the solution.")
+      .def_readonly("torque_cost", &TrajectorySolveReport::torque_cost, "Torque term alone at the solution.")
       .def_readonly("num_variables", &TrajectorySolveReport::num_variables, "Variables.")
       .def_readonly("num_constraints", &TrajectorySolveReport::num_constraints, "Constraint rows.");
 

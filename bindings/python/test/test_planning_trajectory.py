@@ -47,6 +47,18 @@ def test_the_function_solves_a_step_within_the_constraints(model):
         assert w.q.shape == (model.nq(),)
         assert abs(np.linalg.norm(w.q[3:7]) - 1.0) < 1e-9
         assert w.min_clearance > 0.025 - 0.01
+    assert 0.0 < trajectory.report.torque_cost <= trajectory.report.objective
+
+
+def test_the_waist_orientation_smoothness_option_is_exposed_and_validated(model):
+    options = planning.TrajectoryOptimizerOptions()
+    assert options.base_rotation_smoothness_weight == 0.0
+    options.base_rotation_smoothness_weight = 1.0
+    trajectory = planning.OptimizeWholeBodyTrajectory(model, one_step_plan(), [], options)
+    assert trajectory.found, trajectory.report.message
+    options.base_rotation_smoothness_weight = -1.0
+    with pytest.raises(ValueError, match="base_rotation_smoothness_weight is -1"):
+        planning.OptimizeWholeBodyTrajectory(model, one_step_plan(), [], options)
 
 
 def test_the_system_solves_in_an_event_and_reports_failures_by_name(model):

@@ -50,8 +50,9 @@ Solved PlanAndOptimize(const std::string& name) {
   if (plan.found) {
     trajectory = OptimizeWholeBodyTrajectory(test::Humanoid(), plan, EnvironmentFromObstacles(scenario.obstacles()));
   }
-  std::printf("%s: %zu steps, whole body %s in %d iterations, %.2f s\n", name.c_str(), plan.steps.size(),
-              trajectory.report.status.c_str(), trajectory.report.iterations, trajectory.report.seconds);
+  std::printf("%s: %zu steps, whole body %s in %d iterations (%d windows), %.2f s: %s\n", name.c_str(),
+              plan.steps.size(), trajectory.report.status.c_str(), trajectory.report.iterations,
+              trajectory.report.windows, trajectory.report.seconds, trajectory.report.message.c_str());
   return {std::move(scenario), std::move(plan), std::move(trajectory)};
 }
 
@@ -113,8 +114,13 @@ TEST(ThesisObstaclesTest, HighBarFootstepsGoStraightAndTheBodyBendsUnderTheBar) 
   ExpectBendsUnderTheBarOnly(s);
 }
 
-// The detour itself (16 steps) is asserted at the footstep level only: its whole-body solve did not converge
-// within the default 500 iterations (about 90 s), so it is not part of the unit tests.
+// The detour itself (16 steps) is asserted at the footstep level only: its whole-body solve does not converge.
+// Measured 2026-12-02: whole plan, 500 iterations (the limit) with every constraint row within 1e-6, so it is
+// stationarity, not feasibility, that fails; in windows of 2 stances some windows stop at their 500-iteration
+// limit (2995 iterations over 16 windows), also with tolerance 1e-4 (3002), the worst rows then at stance 4
+// mid-swing, beside the low box (1e-5 on the unit quaternion). Not yet confirmed: that the box-box distances
+// between the swing leg and the low box (whose witness points jump between faces) are what keeps the dual
+// infeasibility from falling.
 TEST(ThesisObstaclesTest, ALowObstacleForcesAFootstepDetour) {
   const FootstepScenario scenario = FootstepScenario::Load(kScenarios + "high_bar_low_obstacle.yaml");
   const FootstepPlan plan = PlanOnly(scenario);

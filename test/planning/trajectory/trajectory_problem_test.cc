@@ -1,7 +1,11 @@
 // Problem (2.9) on a straight plan: gradients of the whole program, and the solution's constraints.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 
 #include <cairn/multibody/center_of_mass.h>
 #include <cairn/multibody/data.h>
@@ -150,6 +154,39 @@ TEST(OptimizeWholeBodyTrajectoryTest, AMissingPlanIsAResultNotAnError) {
   bad.d_safe = -1.0;
   CAIRN_EXPECT_THROWS_WITH(OptimizeWholeBodyTrajectory(test::Humanoid(), test::StraightPlan(1, 0.2), {}, bad),
                            std::invalid_argument, "d_safe is -1");
+}
+
+// The largest rotation of the floating base between consecutive waypoints, rad.
+double LargestWaistRotation(const WholeBodyTrajectory& trajectory) {
+  double largest = 0.0;
+  for (std::size_t i = 1; i < trajectory.waypoints.size(); ++i) {
+    const Eigen::VectorXd& a = trajectory.waypoints[i - 1].q;
+    const Eigen::VectorXd& b = trajectory.waypoints[i].q;
+    const Eigen::Quaterniond qa(a(3), a(4), a(5), a(6)), qb(b(3), b(4), b(5), b(6));
+    largest = std::max(largest, qa.angularDistance(qb));
+  }
+  return largest;
+}
+
+TEST(OptimizeWholeBodyTrajectoryTest, TheOrientationSmoothnessTermCalmsTheWaistWithinEveryConstraint) {
+  const auto model = test::Humanoid();
+  const FootstepPlan plan = test::StraightPlan(3, 0.2);
+  TrajectoryOptimizerOptions options;
+  options.base_rotation_smoothness_weight = 0.0;
+  const WholeBodyTrajectory free = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  options.base_rotation_smoothness_weight = 1.0;
+  const WholeBodyTrajectory smooth = OptimizeWholeBodyTrajectory(model, plan, {}, options);
+  ASSERT_TRUE(free.found) << free.report.message;
+  ASSERT_TRUE(smooth.found) << smooth.report.message;
+  ExpectSolutionHoldsTheConstraints(smooth, plan, options);
+  const double free_swing = LargestWaistRotation(free), smooth_swing = LargestWaistRotation(smooth);
+  std::printf("largest waist rotation between waypoints: %.1f deg free, %.1f deg smoothed; objective %.4f, %.4f\n",
+              free_swing * 180.0 / M_PI, smooth_swing * 180.0 / M_PI, free.report.objective, smooth.report.objective);
+  EXPECT_LT(smooth_swing, 0.5 * free_swing);
+  TrajectoryOptimizerOptions bad;
+  bad.base_rotation_smoothness_weight = -1.0;
+  CAIRN_EXPECT_THROWS_WITH(ValidateTrajectoryOptimizerOptions(bad), std::invalid_argument,
+                           "base_rotation_smoothness_weight is -1; it must be finite and >= 0");
 }
 
 TEST(OptimizeWholeBodyTrajectoryTest, ARecedingWindowKeepsContinuityAndTheConstraints) {

@@ -10,6 +10,7 @@
 #include <cairn/multibody/data.h>
 #include <cairn/multibody/kinematics.h>
 #include <cairn/optimization/check_gradients.h>
+#include <cairn/planning/trajectory/base_rotation_change.h>
 #include <cairn/planning/trajectory/center_of_mass_projection.h>
 #include <cairn/planning/trajectory/collision_penalty.h>
 #include <cairn/planning/trajectory/configuration_chart.h>
@@ -114,6 +115,23 @@ TEST(QuaternionNormErrorTest, GradientAndHessianMatchFiniteDifferences) {
   EXPECT_NEAR(norm.Eval(x)(0), x.squaredNorm() - 1.0, 1e-15);
   const auto check = CheckGradients(norm, x, 1e-6);
   EXPECT_TRUE(check.passed) << check.ToString();
+}
+
+TEST(BaseRotationChangeTest, MeasuresTheRotationAngleBetweenTwoWaypointsAndHasExactDerivatives) {
+  const BaseRotationChange change;
+  const Eigen::Quaterniond a(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.2, 0.3, 1.0).normalized()));
+  for (const double theta : {0.0, 0.05, 0.4}) {
+    const Eigen::Quaterniond b = a * Eigen::Quaterniond(Eigen::AngleAxisd(theta, Eigen::Vector3d(1.0, -0.5, 0.3).normalized()));
+    Eigen::VectorXd x(8);
+    x << a.w(), a.x(), a.y(), a.z(), b.w(), b.x(), b.y(), b.z();
+    // |r| = 4 sin(theta / 4): the rotation angle to second order.
+    EXPECT_NEAR(change.Eval(x).norm(), 4.0 * std::sin(0.25 * theta), 1e-12);
+    EXPECT_NEAR(change.Eval(x).norm(), theta, theta * theta * theta / 90.0 + 1e-15);  // 4 sin(t/4) = t - t^3/96 + ...
+    const auto check = CheckGradients(change, x, 1e-8);
+    EXPECT_TRUE(check.passed) << check.ToString();
+  }
+  EXPECT_TRUE(change.has_hessian());
+  EXPECT_TRUE(change.hessian_pattern().empty());  // linear: the least-squares J'J is the exact Hessian
 }
 
 TEST(StaticTorqueResidualTest, SingleSupportTorquesAreThoseOfTheChainFromTheFoot) {
