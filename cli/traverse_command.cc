@@ -1,5 +1,6 @@
-// `cairn traverse`: the seed 001 pipeline on a probing scenario — see, map, probe, plan, walk — with PNGs of every
-// layer and a JSON summary (docs/traverse.md).
+// `cairn traverse`: the seed 001 pipeline on a probing scenario — see, map, probe, plan, walk — as the probing
+// diagram (planning/scenarios/probing_diagram.h, the one examples/probing runs) simulated with the Simulator, with
+// PNGs of every layer and a JSON summary (docs/traverse.md).
 
 #include <cstdio>
 #include <memory>
@@ -11,8 +12,9 @@
 #include "cairn/common/json_writer.h"
 #include "cairn/common/number_text.h"
 #include "cairn/planning/scenarios/traverse_scenario.h"
-#include "cairn/planning/scenarios/traverse_simulation.h"
+#include "cairn/planning/scenarios/probing_diagram.h"
 #include "command_registry.h"
+#include "data_directory.h"
 #include "file_checks.h"
 #include "traverse_image.h"
 
@@ -24,6 +26,7 @@ struct TraverseArgs {
   std::string out;
   bool no_probing{false};
   bool json{false};
+  std::string probe_model;
 };
 
 // The files `--out` holds; the folder is replaced as a whole (AtomicOutputDirectory).
@@ -38,9 +41,10 @@ bool IsTraverseOutput(const std::string& name) {
   return false;
 }
 
-std::string SummaryJson(const TraverseArgs& args, const planning::TraverseSimulation::Result& r) {
+std::string SummaryJson(const TraverseArgs& args, const planning::ProbingRun& r) {
   JsonWriter json;
   json.BeginObject().Key("scenario").String(args.scenario).Key("probing").Bool(!args.no_probing);
+  json.Key("probe_model").String(args.probe_model);
   json.Key("reached_goal").Bool(r.reached_goal).Key("failure").String(r.failure);
   json.Key("ticks").Integer(r.ticks).Key("path_length_m").Number(r.distance_walked);
   json.Key("replans").Integer(r.replans).Key("probes_made").Integer(r.probes.size());
@@ -53,6 +57,7 @@ std::string SummaryJson(const TraverseArgs& args, const planning::TraverseSimula
     json.BeginObject().Key("tick").Integer(p.tick).Key("x").Number(p.target.x()).Key("y").Number(p.target.y());
     json.Key("class").String(p.cluster_class).Key("region").String(p.region).Key("cluster_cells").Integer(p.cluster_cells);
     json.Key("force_N").Number(p.average_force).Key("collapsibility").Number(p.collapsibility);
+    json.Key("plant_time_s").Number(p.simulated_time);
     json.Key("path_crossed_cluster").Bool(p.path_crossed_cluster).Key("path_crosses_after").Bool(p.path_crosses_after);
     json.EndObject();
   }
@@ -66,10 +71,12 @@ int RunTraverse(const TraverseArgs& args) {
   // Fail fast on an unusable output folder, before the run.
   std::optional<AtomicOutputDirectory> out;
   if (!args.out.empty()) out.emplace(args.out, IsTraverseOutput);
-  planning::TraverseSimulation::Options options;
-  options.probing = !args.no_probing;
-  const planning::TraverseSimulation::Result r = planning::TraverseSimulation(scenario, options).Run();
-  const std::string summary = SummaryJson(args, r);
+  TraverseArgs described = args;
+  described.probe_model = scenario.probe_model == planning::TraverseScenario::ProbeModel::kPlant ? "plant" : "spring";
+  // One tick of TraverseSimulation is one 0.1 s period of the diagram.
+  const planning::ProbingRun r = planning::RunProbingDiagram(
+      scenario, DataDirectory() + "/robots/cairn_probe_arm.urdf", 0.1 * scenario.max_ticks, !args.no_probing);
+  const std::string summary = SummaryJson(described, r);
   if (out) {
     const auto& map = r.map;
     double zmax = 0.0;
@@ -89,7 +96,7 @@ int RunTraverse(const TraverseArgs& args) {
     std::printf("%s\n", summary.c_str());
     return 0;
   }
-  std::printf("probing    %s\n", args.no_probing ? "off" : "on");
+  std::printf("probing    %s (%s probe model)\n", args.no_probing ? "off" : "on", described.probe_model.c_str());
   for (const auto& p : r.probes) {
     std::printf("probe      tick %d at (%s, %s) %s '%s': %s N, C = %s\n", p.tick, FormatShort(p.target.x()).c_str(),
                 FormatShort(p.target.y()).c_str(), p.cluster_class.c_str(), p.region.c_str(),

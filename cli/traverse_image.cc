@@ -37,7 +37,7 @@ cv::Vec3b Ramp(double t) {
 
 std::string TraverseLayerPng(const perception::GridMap& map, const std::string& layer, double lo, double hi,
                              const std::string& unit, const planning::TraverseScenario& scenario,
-                             const planning::TraverseSimulation::Result& result) {
+                             const planning::ProbingRun& result) {
   const int nx = map.size().x(), ny = map.size().y();
   // At most about 800 pixels a side, at least one per cell (the scenario bounds the cells to 2^22).
   const int scale = std::max(1, std::min(8, 800 / std::max(nx, ny)));

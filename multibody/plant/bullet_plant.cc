@@ -333,6 +333,7 @@ void BulletPlant::Impl::BuildTerrain() {
     auto body = std::make_unique<btRigidBody>(info);
     body->setWorldTransform(ToBt(box.X_WB));
     body->setUserIndex(static_cast<int>(i));
+    if (std::isfinite(box.contact_stiffness)) body->setContactStiffnessAndDamping(box.contact_stiffness, box.contact_damping);
     world->addRigidBody(body.get(), kTerrainGroup, kRobotGroup);
     shapes.push_back(std::move(shape));
     terrain_bodies.push_back(std::move(body));
@@ -395,6 +396,20 @@ BulletPlant::BulletPlant(const Model& model, const std::vector<TerrainBox>& terr
     if (!(box.friction >= 0.0 && box.friction <= 10.0)) {
       throw std::invalid_argument("BulletPlant: terrain box '" + box.name + "' has friction " +
                                   FormatShort(box.friction) + "; it must lie in [0, 10]");
+    }
+    if (!(box.contact_stiffness > 0.0)) {
+      throw std::invalid_argument("BulletPlant: terrain box '" + box.name + "' has contact_stiffness " +
+                                  FormatShort(box.contact_stiffness) +
+                                  " N/m; it must be > 0 (infinity, the default, is rigid)");
+    }
+    if (!(std::isfinite(box.contact_damping) && box.contact_damping >= 0.0)) {
+      throw std::invalid_argument("BulletPlant: terrain box '" + box.name + "' has contact_damping " +
+                                  FormatShort(box.contact_damping) + " N s/m; it must be finite and >= 0");
+    }
+    if (std::isinf(box.contact_stiffness) && box.contact_damping > 0.0) {
+      throw std::invalid_argument("BulletPlant: terrain box '" + box.name + "' has contact_damping " +
+                                  FormatShort(box.contact_damping) +
+                                  " N s/m but a rigid contact; give it a finite contact_stiffness or damping 0");
     }
     if (!box.X_WB.translation().allFinite() || !box.X_WB.rotation().allFinite()) {
       throw std::invalid_argument("BulletPlant: terrain box '" + box.name + "' has a non-finite pose");

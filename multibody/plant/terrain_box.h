@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include <Eigen/Core>
@@ -20,6 +21,14 @@ struct TerrainBox {
   Eigen::Vector3d size = Eigen::Vector3d::Ones();
   /// The true Coulomb friction coefficient between this region and the robot (finite, in [0, 10]).
   double friction = 1.0;
+  /// Normal contact stiffness (N/m): infinity (the default) is Bullet's rigid contact; a finite value > 0 makes
+  /// the box yield like a spring of that stiffness (Bullet's per-object contact stiffness), e.g. soft soil.
+  /// Bullet applies it at each contact point, so a body resting on the box at n points meets about n times the
+  /// stiffness (a round probe tip touches at one point; a flat sole at up to four).
+  double contact_stiffness = std::numeric_limits<double>::infinity();
+  /// Normal contact damping (N s/m, finite, >= 0) of a box with a finite contact_stiffness; must stay 0 for a
+  /// rigid box.
+  double contact_damping = 0.0;
 };
 
 }  // namespace cairn::multibody

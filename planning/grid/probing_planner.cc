@@ -29,6 +29,13 @@ void Union(std::vector<int>& parent, int a, int b) {
   parent[a] = b;  // the lower index is the root, so clusters are named by their first point
 }
 
+std::invalid_argument TooManyPairs(long long pairs, double cluster_distance) {
+  return std::invalid_argument("ProbingPlanner: cluster_distance " + FormatShort(cluster_distance) + " m needs " +
+                               FormatShort(static_cast<double>(pairs)) + " point-pair comparisons, more than the " +
+                               "limit of " + FormatShort(static_cast<double>(ProbingPlanner::kMaxPairComparisons)) +
+                               "; use a cluster_distance near the points' spacing (e.g. 1.5 map cells)");
+}
+
 }  // namespace
 
 ProbingPlanner::ProbingPlanner(const Options& options) : options_(options) {
@@ -73,6 +80,17 @@ std::vector<ProbingPlanner::Cluster> ProbingPlanner::FindClusters(const Eigen::M
   std::map<Key, std::vector<int>> buckets;
   for (int k = 0; k < n; ++k) {
     if (labels[k] >= 0) buckets[BucketOf(points.col(k))].push_back(k);
+  }
+  // Count the comparisons first: a bucket holding most points makes the loop below quadratic.
+  long long pairs = 0;
+  for (const auto& [key, members] : buckets) {
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = buckets.find({key.first + dx, key.second + dy});
+        if (it != buckets.end()) pairs += static_cast<long long>(members.size()) * it->second.size();
+      }
+    }
+    if (pairs > kMaxPairComparisons) throw TooManyPairs(pairs, options_.cluster_distance);
   }
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
@@ -124,6 +142,7 @@ std::vector<ProbingPlanner::Cluster> ProbingPlanner::FindClusters(const Eigen::M
 int ProbingPlanner::TouchingProbe(const Cluster& cluster, const Eigen::Matrix2Xd& points) const {
   const double d2 = options_.cluster_distance * options_.cluster_distance;
   int found = -1;
+  long long pairs = 0;
   for (int k : cluster.members) {
     if (k < 0 || k >= points.cols()) {
       throw std::invalid_argument("ProbingPlanner: cluster member " + FormatShort(k) + " is not a column of the " +
@@ -132,6 +151,13 @@ int ProbingPlanner::TouchingProbe(const Cluster& cluster, const Eigen::Matrix2Xd
     }
     const Eigen::Vector2d p = points.col(k);
     const Key key = BucketOf(p);
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = probed_points_.find({key.first + dx, key.second + dy});
+        if (it != probed_points_.end()) pairs += static_cast<long long>(it->second.size());
+      }
+    }
+    if (pairs > kMaxPairComparisons) throw TooManyPairs(pairs, options_.cluster_distance);
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
         const auto it = probed_points_.find({key.first + dx, key.second + dy});

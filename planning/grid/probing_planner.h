@@ -27,6 +27,10 @@ class ProbingPlanner {
   static constexpr int kMaxPoints = 1 << 22;
   /// Largest |coordinate| of a point, m (so that bucket indices stay exact).
   static constexpr double kMaxCoordinate = 1e6;
+  /// Most point pairs one FindClusters or TouchingProbe call may compare. Points are compared within buckets of
+  /// side cluster_distance, so a cluster_distance much larger than the point spacing makes the work quadratic;
+  /// such calls are refused instead of running for hours.
+  static constexpr long long kMaxPairComparisons = 1LL << 28;
 
   struct Options {
     /// Points of one class closer than this (m) belong to one cluster.
@@ -77,12 +81,13 @@ class ProbingPlanner {
   const Options& options() const { return options_; }
 
   /// Clusters `points` (2 x N, world x-y) by class `labels` (N values; negative = not questionable, skipped).
-  /// Throws std::invalid_argument for mismatched sizes, more than kMaxPoints points, or a point that is not
-  /// finite or beyond kMaxCoordinate.
+  /// Throws std::invalid_argument for mismatched sizes, more than kMaxPoints points, a point that is not
+  /// finite or beyond kMaxCoordinate, or more than kMaxPairComparisons pairs to compare (naming cluster_distance).
   std::vector<Cluster> FindClusters(const Eigen::Matrix2Xd& points, const std::vector<int>& labels) const;
 
   /// The recorded probe a cluster grows out of (same class, a point within cluster_distance of the probed
-  /// cluster's points), or -1. Throws std::invalid_argument for a member that is not a column of `points`.
+  /// cluster's points), or -1. Throws std::invalid_argument for a member that is not a column of `points`, or
+  /// for more than kMaxPairComparisons pairs to compare.
   int TouchingProbe(const Cluster& cluster, const Eigen::Matrix2Xd& points) const;
 
   /// The nearest candidate of the clusters big enough and not touching a recorded probe, seen from `robot`.

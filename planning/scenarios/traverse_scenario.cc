@@ -82,7 +82,19 @@ TraverseScenario Parse(const YamlReader& yaml) {
   }
   if (YamlReader::Has(root, "probe")) {
     const YAML::Node n = root["probe"];
-    yaml.CheckKeys(n, {"depth", "hard_force", "noise", "samples", "reach", "ground_stiffness"}, "probe");
+    yaml.CheckKeys(n, {"model", "depth", "hard_force", "noise", "samples", "reach", "ground_stiffness", "damping"},
+                   "probe");
+    if (YamlReader::Has(n, "model")) {
+      const std::string model = yaml.String(n, "model", "probe");
+      if (model == "plant") {
+        s.probe_model = TraverseScenario::ProbeModel::kPlant;
+      } else if (model == "spring") {
+        s.probe_model = TraverseScenario::ProbeModel::kSpring;
+      } else {
+        throw yaml.Error(n["model"], "probe: model '" + model + "' is not one of plant, spring.");
+      }
+    }
+    s.probe_damping = InRange(yaml, n, "probe", "damping", s.probe_damping, 0.0, 1e6, " N s/m");
     s.probe_depth = InRange(yaml, n, "probe", "depth", s.probe_depth, 1e-4, 1.0, " m");
     s.hard_force = InRange(yaml, n, "probe", "hard_force", s.hard_force, 1.0, 1e4, " N");
     s.force_noise = InRange(yaml, n, "probe", "noise", s.force_noise, 0.0, 1e3, " N");

@@ -64,9 +64,21 @@ class TraverseScenario {
   double step{0.1};
   int max_ticks{1500};
 
-  /// Probe: the arm pushes `probe_depth` into the ground; the force is stiffness x depth plus Gaussian noise of
-  /// `force_noise` N, sampled `probe_samples` times and averaged (eq. 5 with F_hard = `hard_force`); the arm
-  /// reaches `reach` m from the robot. `ground_stiffness` is that of plain ground outside the regions.
+  /// How a probe's force is simulated.
+  enum class ProbeModel {
+    /// The arm in the physics plant (ProbeArmPlant): the tip pushes into a terrain box whose contact stiffness is
+    /// the ground's (none under deep water); the default, as seed 001 simulates it.
+    kPlant,
+    /// The force is stiffness x depth directly (fast, no arm or contact dynamics).
+    kSpring,
+  };
+
+  /// Probe: the arm pushes `probe_depth` into the ground; the force (stiffness x depth at rest, with the plant
+  /// model) plus Gaussian noise of `force_noise` N is sampled `probe_samples` times and averaged (eq. 5 with
+  /// F_hard = `hard_force`); the arm reaches `reach` m from the robot. `ground_stiffness` is that of plain ground
+  /// outside the regions; `probe_damping` (N s/m) is the contact damping of every ground with support.
+  ProbeModel probe_model{ProbeModel::kPlant};
+  double probe_damping{50.0};
   double probe_depth{0.02};
   double hard_force{100.0};
   double force_noise{2.0};

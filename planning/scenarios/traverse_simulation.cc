@@ -26,6 +26,8 @@ using perception::GridMap;
 // Measurement variance of a probe's collapsibility: probing touches the ground, so it is far more certain than a
 // segmentation (seed 001 §4.2); SemanticFusion's default is 0.04.
 constexpr double kProbeVariance = 0.0025;
+// Sample rate of the simulated force sensor, Hz.
+constexpr double kForceSensorRate = 200.0;
 
 TraversabilityGrid ToGrid(const GridMap& map, int layer) {
   TraversabilityGrid grid;
@@ -40,8 +42,35 @@ TraversabilityGrid ToGrid(const GridMap& map, int layer) {
 
 }  // namespace
 
+ProbeArmPlant TraverseSimulation::MakeProbeArm(const TraverseScenario& scenario, const std::string& urdf_path) {
+  if (urdf_path.empty()) {
+    throw std::invalid_argument(
+        "TraverseSimulation: the scenario probes with the physics plant (probe model 'plant') but no probe arm URDF "
+        "was given; pass data/robots/cairn_probe_arm.urdf, or set the probe model to 'spring'");
+  }
+  ProbeArmPlant::Options o;
+  o.depth = scenario.probe_depth;
+  o.samples = scenario.probe_samples;
+  o.noise = scenario.force_noise;
+  o.hold_time = std::max(o.hold_time, scenario.probe_samples / kForceSensorRate);
+  ProbeArmPlant arm = ProbeArmPlant::Load(urdf_path, o);
+  // In the probing diagram the robot's walker and the supervisor decide in the same period, so the robot may take
+  // one more step before it stands still to probe: the target may then be a step further away.
+  if (scenario.reach + scenario.step > arm.reach()) {
+    throw std::invalid_argument("TraverseSimulation: the scenario's probe reach " + FormatShort(scenario.reach) +
+                                " m plus one robot step of " + FormatShort(scenario.step) +
+                                " m exceeds the arm's reach of " + FormatShort(arm.reach()) +
+                                " m; lower 'probe: reach' or 'robot: step'");
+  }
+  return arm;
+}
+
 TraverseSimulation::TraverseSimulation(TraverseScenario scenario, const Options& options)
-    : scenario_(std::move(scenario)), options_(options) {}
+    : scenario_(std::move(scenario)), options_(options) {
+  if (scenario_.probe_model == TraverseScenario::ProbeModel::kPlant && options_.probing) {
+    arm_.emplace(MakeProbeArm(scenario_, options_.probe_arm_urdf));
+  }
+}
 
 TraverseSimulation::Result TraverseSimulation::Run() const {
   const TraverseScenario& s = scenario_;
@@ -212,8 +241,18 @@ TraverseSimulation::Result TraverseSimulation::Run() const {
         record.cluster_cells = static_cast<int>(cells.size());
         record.path_crossed_cluster = crosses(cell_set);
         estimator.Reset();
-        const double force = s.StiffnessAt(decision.target) * s.probe_depth;
-        for (int k = 0; k < s.probe_samples; ++k) estimator.AddSample(force + s.force_noise * unit(rng));
+        if (arm_) {
+          ProbeArmPlant::Ground ground;
+          ground.height = s.HeightAt(decision.target);
+          ground.stiffness = s.StiffnessAt(decision.target);
+          ground.damping = s.probe_damping;
+          const ProbeArmPlant::Probe probe = arm_->Run(robot, decision.target, ground, &rng);
+          for (double f : probe.forces) estimator.AddSample(f);
+          record.simulated_time = probe.simulated_time;
+        } else {
+          const double force = s.StiffnessAt(decision.target) * s.probe_depth;
+          for (int k = 0; k < s.probe_samples; ++k) estimator.AddSample(force + s.force_noise * unit(rng));
+        }
         record.average_force = estimator.AverageForce();
         record.collapsibility = estimator.Collapsibility();
         assign(cells, record.collapsibility);

@@ -3,12 +3,14 @@
 /// @file
 /// TraverseSimulation: the seed 001 pipeline run on a TraverseScenario — see, map, probe, plan, walk.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "cairn/perception/terrain/grid_map.h"
+#include "cairn/planning/scenarios/probe_arm_plant.h"
 #include "cairn/planning/scenarios/traverse_scenario.h"
 
 namespace cairn::planning {
@@ -19,14 +21,14 @@ namespace cairn::planning {
 ///     (SlopeRoughnessFilter) and traversability (HierarchicalTraversability, Algorithm 1);
 ///  2. probe (unless disabled): semantic cells of unknown collapsibility are clustered (ProbingPlanner); a cluster
 ///     grown out of a probed one inherits its collapsibility; when the nearest candidate is within reach the robot
-///     stands still, the probe pushes `probe_depth` into the ground and its force samples (stiffness x depth +
-///     Gaussian noise) are averaged into C (CollapsibilityEstimator, eq. 5), which is fused into the cluster's
-///     cells; traversability is recomputed;
+///     stands still, the probe pushes `probe_depth` into the ground and its force samples are averaged into C
+///     (CollapsibilityEstimator, eq. 5), which is fused into the cluster's cells; traversability is recomputed.
+///     The force comes from the probe arm in the physics plant (ProbeArmPlant, the scenario's default probe
+///     model) or, with the `spring` probe model, from stiffness x depth; both add the sensor's Gaussian noise;
 ///  3. plan: A* on the traversability (GridSearch), every tick, so the path follows the map's changes; a plan
 ///     whose previous path the new map blocks counts as a replan;
 ///  4. walk `step` m along the path.
-/// The robot is kinematic (a point; the gait is not the subject) and the probe force comes from a linear
-/// contact spring per region, not from the physics plant. Deterministic for a given seed.
+/// The robot is kinematic (a point; the gait is not the subject). Deterministic for a given seed.
 class TraverseSimulation {
  public:
   struct Options {
@@ -34,6 +36,8 @@ class TraverseSimulation {
     bool probing{true};
     /// Threads of the map updates (0 = one per core).
     int num_threads{0};
+    /// The probe arm's URDF (data/robots/cairn_probe_arm.urdf), needed by the scenario's plant probe model.
+    std::string probe_arm_urdf;
   };
 
   /// One probe.
@@ -48,6 +52,8 @@ class TraverseSimulation {
     int cluster_cells{0};
     double average_force{0.0};
     double collapsibility{0.0};
+    /// Plant time the probe simulated, s (0 with the spring model).
+    double simulated_time{0.0};
     /// Whether the path planned just before the probe crossed the cluster.
     bool path_crossed_cluster{false};
     /// Whether the path planned just after the probe crosses it.
@@ -77,7 +83,13 @@ class TraverseSimulation {
     perception::GridMap map{Eigen::Vector2i(1, 1), 1.0, Eigen::Vector2d::Zero()};
   };
 
+  /// Throws std::invalid_argument when the scenario's plant probe model has no probe_arm_urdf, the URDF is not
+  /// the probe arm, or the scenario's probe (reach, samples) does not fit the arm (naming the value).
   TraverseSimulation(TraverseScenario scenario, const Options& options);
+
+  /// The probe arm of a scenario in the plant: its depth, samples and noise, a 200 Hz force sensor (the hold
+  /// lasts samples / 200 Hz, at least 0.1 s). Throws as the constructor does.
+  static ProbeArmPlant MakeProbeArm(const TraverseScenario& scenario, const std::string& urdf_path);
 
   const TraverseScenario& scenario() const { return scenario_; }
 
@@ -87,6 +99,7 @@ class TraverseSimulation {
  private:
   TraverseScenario scenario_;
   Options options_;
+  std::optional<ProbeArmPlant> arm_;
 };
 
 }  // namespace cairn::planning

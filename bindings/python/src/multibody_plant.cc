@@ -37,7 +37,11 @@ void DefineMultibodyPlant(py::module_ m) {
       .def_readwrite("name", &TerrainBox::name, "Region name.")
       .def_readwrite("X_WB", &TerrainBox::X_WB, "Pose of the box centre in the world.")
       .def_readwrite("size", &TerrainBox::size, "Full side lengths (m).")
-      .def_readwrite("friction", &TerrainBox::friction, "Coulomb friction coefficient in [0, 10].");
+      .def_readwrite("friction", &TerrainBox::friction, "Coulomb friction coefficient in [0, 10].")
+      .def_readwrite("contact_stiffness", &TerrainBox::contact_stiffness,
+                     "Normal contact stiffness per contact point, N/m (inf: rigid).")
+      .def_readwrite("contact_damping", &TerrainBox::contact_damping,
+                     "Normal contact damping, N s/m (0 for a rigid box).");
 
   py::class_<BulletPlantOptions>(m, "BulletPlantOptions", "How a BulletPlant steps.")
       .def(py::init<>(), "1 ms steps, contacts on, 100 solver iterations.")

@@ -1,6 +1,8 @@
 // cairn.planning, grid part (seed 001): TraversabilityGrid, GridSearch (Dijkstra/A*), ProbingPlanner, the
 // GridPathPlanner system, and the traverse scenario with its simulation (what `cairn traverse` runs).
 
+#include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,12 @@
 #include "cairn/planning/grid/grid_search.h"
 #include "cairn/planning/grid/probing_planner.h"
 #include "cairn/planning/grid/traversability_grid.h"
+#include "cairn/planning/scenarios/path_follower.h"
+#include "cairn/planning/scenarios/probe_arm.h"
+#include "cairn/planning/scenarios/probe_arm_plant.h"
+#include "cairn/planning/scenarios/probe_supervisor.h"
+#include "cairn/planning/scenarios/probing_diagram.h"
+#include "cairn/planning/scenarios/scenario_sensor.h"
 #include "cairn/planning/scenarios/traverse_scenario.h"
 #include "cairn/planning/scenarios/traverse_simulation.h"
 
@@ -113,19 +121,164 @@ void DefinePlanningGrid(py::module_ m) {
       .def("get_path_output_port", PortGetter(&GridPathPlanner::get_path_output_port), "Output `path`.")
       .def("get_status_output_port", PortGetter(&GridPathPlanner::get_status_output_port), "Output `status`.");
 
-  py::class_<TraverseScenario>(m, "TraverseScenario", "A probing scenario read from YAML (docs/traverse.md).")
+  py::class_<TraverseScenario> scenario(m, "TraverseScenario", "A probing scenario read from YAML (docs/traverse.md).");
+  py::enum_<TraverseScenario::ProbeModel>(scenario, "ProbeModel", "How a probe's force is simulated.")
+      .value("kPlant", TraverseScenario::ProbeModel::kPlant, "The arm in the physics plant (ProbeArmPlant).")
+      .value("kSpring", TraverseScenario::ProbeModel::kSpring, "stiffness x depth (fast).");
+  scenario
       .def_static("Load", &TraverseScenario::Load, py::arg("path"), "Reads and validates a scenario file.")
       .def_readonly("start", &TraverseScenario::start, "Start x-y.")
       .def_readonly("goal", &TraverseScenario::goal, "Goal x-y.")
       .def_readonly("resolution", &TraverseScenario::resolution, "Map cell size, m.")
       .def("ClassAt", &TraverseScenario::ClassAt, py::arg("p"), "0 plants, 1 water, -1 none.")
-      .def("TrueCollapsibility", &TraverseScenario::TrueCollapsibility, py::arg("p"), "Noiseless probe's C at p.");
+      .def("TrueCollapsibility", &TraverseScenario::TrueCollapsibility, py::arg("p"), "Noiseless probe's C at p.")
+      .def("StiffnessAt", &TraverseScenario::StiffnessAt, py::arg("p"), "Ground stiffness at p, N/m.")
+      .def("HeightAt", &TraverseScenario::HeightAt, py::arg("p"), "Ground height at p, m.")
+      .def_readwrite("probe_model", &TraverseScenario::probe_model, "ProbeModel.")
+      .def_readwrite("probe_damping", &TraverseScenario::probe_damping, "Contact damping of supported ground, N s/m.")
+      .def_readwrite("probe_depth", &TraverseScenario::probe_depth, "m.")
+      .def_readwrite("probe_samples", &TraverseScenario::probe_samples, "Force samples per probe.")
+      .def_readwrite("reach", &TraverseScenario::reach, "The arm's reach used by the probing planner, m.");
+
+  py::class_<ProbeArmPlant> arm_plant(m, "ProbeArmPlant",
+                                      "One probe simulated in the Bullet plant: the yaw-pitch-push arm "
+                                      "(data/robots/cairn_probe_arm.urdf) pushes its tip into a terrain box.");
+  py::class_<ProbeArmPlant::Options>(arm_plant, "Options", "Mount, depth, timing, sensor, gains.")
+      .def(py::init<>(), "Defaults: 0.5 m mount, 2 cm depth, 20 samples, 2 N noise, 0.5 ms step.")
+      .def_readwrite("mount_height", &ProbeArmPlant::Options::mount_height, "m.")
+      .def_readwrite("clearance", &ProbeArmPlant::Options::clearance, "m.")
+      .def_readwrite("depth", &ProbeArmPlant::Options::depth, "m.")
+      .def_readwrite("push_time", &ProbeArmPlant::Options::push_time, "s.")
+      .def_readwrite("hold_time", &ProbeArmPlant::Options::hold_time, "s.")
+      .def_readwrite("samples", &ProbeArmPlant::Options::samples, "Readings during the hold.")
+      .def_readwrite("noise", &ProbeArmPlant::Options::noise, "Sensor noise, N.")
+      .def_readwrite("time_step", &ProbeArmPlant::Options::time_step, "s.")
+      .def_readwrite("kp_rotary", &ProbeArmPlant::Options::kp_rotary, "Yaw and pitch stiffness, N m/rad.")
+      .def_readwrite("kd_rotary", &ProbeArmPlant::Options::kd_rotary, "Yaw and pitch damping, N m s/rad.")
+      .def_readwrite("kp_push", &ProbeArmPlant::Options::kp_push, "N/m.")
+      .def_readwrite("kd_push", &ProbeArmPlant::Options::kd_push, "N s/m.")
+      .def_readwrite("patch_size", &ProbeArmPlant::Options::patch_size, "m.");
+  py::class_<ProbeArmPlant::Ground>(arm_plant, "Ground", "The ground under the target.")
+      .def(py::init([](double height, double stiffness, double damping) {
+             return ProbeArmPlant::Ground{height, stiffness, damping};
+           }),
+           py::arg("height") = 0.0, py::arg("stiffness") = 0.0, py::arg("damping") = 0.0,
+           "Stiffness 0: no support (deep water); inf: rigid.")
+      .def_readwrite("height", &ProbeArmPlant::Ground::height, "m.")
+      .def_readwrite("stiffness", &ProbeArmPlant::Ground::stiffness, "N/m.")
+      .def_readwrite("damping", &ProbeArmPlant::Ground::damping, "N s/m.");
+  py::class_<ProbeArmPlant::Probe>(arm_plant, "Probe", "What one probe measured.")
+      .def_readonly("forces", &ProbeArmPlant::Probe::forces, "Noisy readings, N.")
+      .def_readonly("true_forces", &ProbeArmPlant::Probe::true_forces, "Noise-free readings, N.")
+      .def_readonly("final_depth", &ProbeArmPlant::Probe::final_depth, "m below the surface.")
+      .def_readonly("simulated_time", &ProbeArmPlant::Probe::simulated_time, "s.")
+      .def_readonly("steps", &ProbeArmPlant::Probe::steps, "Plant steps.")
+      .def_readonly("max_contact_points", &ProbeArmPlant::Probe::max_contact_points,
+                    "Most tip contact points at a reading (the soft contact acts per point).");
+  arm_plant
+      .def_static("Load", &ProbeArmPlant::Load, py::arg("urdf_path"), py::arg("options") = ProbeArmPlant::Options{},
+                  "Reads the arm's URDF.")
+      .def("reach", &ProbeArmPlant::reach, "Farthest horizontal reach at full depth, m.")
+      .def(
+          "Run",
+          [](const ProbeArmPlant& self, const Eigen::Vector2d& base, const Eigen::Vector2d& target,
+             const ProbeArmPlant::Ground& ground, int seed) {
+            std::mt19937 rng(static_cast<std::mt19937::result_type>(seed));
+            py::gil_scoped_release release;
+            return self.Run(base, target, ground, &rng);
+          },
+          py::arg("base"), py::arg("target"), py::arg("ground"), py::arg("seed") = 1,
+          "Simulates one probe from a robot at `base` (x-y) of `target` (x-y), noise seeded by `seed`.");
+
+  py::class_<ScenarioSensor, systems::LeafSystem>(
+      m, "ScenarioSensor",
+      "System: input `robot` (2); outputs `points_W` (3 x N), `sensor_W` (3), `probabilities` (2 x N) of the "
+      "scenario's ground within sensor range.")
+      .def(py::init<TraverseScenario>(), py::arg("scenario"), "The scenario's ground truth.")
+      .def("get_robot_input_port", PortGetter(&ScenarioSensor::get_robot_input_port), "Input `robot`.");
+  py::class_<ProbeArm, systems::LeafSystem>(
+      m, "ProbeArm",
+      "System: inputs `command` ([x, y, active]) and `robot` (2); outputs `force` (1) and `probing` (1): a probe "
+      "simulated when the command switches on, its readings played out one per period.")
+      .def(py::init([](TraverseScenario scenario, const std::string& urdf, double period) {
+             std::optional<ProbeArmPlant> plant;
+             if (scenario.probe_model == TraverseScenario::ProbeModel::kPlant) {
+               plant = TraverseSimulation::MakeProbeArm(scenario, urdf);
+             }
+             return std::make_unique<ProbeArm>(std::move(scenario), std::move(plant), period);
+           }),
+           py::arg("scenario"), py::arg("probe_arm_urdf") = std::string(), py::arg("period") = 0.005,
+           "The scenario's probe model decides plant (needs the URDF) or spring.")
+      .def("get_command_input_port", PortGetter(&ProbeArm::get_command_input_port), "Input `command`.")
+      .def("get_robot_input_port", PortGetter(&ProbeArm::get_robot_input_port), "Input `robot`.")
+      .def("get_force_output_port", PortGetter(&ProbeArm::get_force_output_port), "Output `force`.")
+      .def("get_probing_output_port", PortGetter(&ProbeArm::get_probing_output_port), "Output `probing`.")
+      .def(
+          "simulated_time",
+          [](const ProbeArm& self, const systems::Context& context) { return self.memory(context).simulated_time; },
+          py::arg("context"), "Plant time simulated by all probes so far, s.");
+  py::class_<ProbeSupervisor, systems::LeafSystem>(
+      m, "ProbeSupervisor",
+      "System (seed 001 5.3): inputs `map` (GridMap), `robot` (2), `collapsibility` ([C, samples]); outputs "
+      "`probes` (ProbedRegions), `probe_command` ([x, y, active]), `pause` (1).")
+      .def(py::init<const ProbingPlanner::Options&, double, int, double>(), py::arg("options"),
+           py::arg("semantic_threshold") = 0.5, py::arg("probe_periods") = 2, py::arg("period") = 0.1,
+           "Planner options, class threshold, periods to wait for C, update period.")
+      .def("get_map_input_port", PortGetter(&ProbeSupervisor::get_map_input_port), "Input `map`.")
+      .def("get_robot_input_port", PortGetter(&ProbeSupervisor::get_robot_input_port), "Input `robot`.")
+      .def("get_collapsibility_input_port", PortGetter(&ProbeSupervisor::get_collapsibility_input_port),
+           "Input `collapsibility`.")
+      .def("get_probes_output_port", PortGetter(&ProbeSupervisor::get_probes_output_port), "Output `probes`.")
+      .def("get_probe_command_output_port", PortGetter(&ProbeSupervisor::get_probe_command_output_port),
+           "Output `probe_command`.")
+      .def("get_pause_output_port", PortGetter(&ProbeSupervisor::get_pause_output_port), "Output `pause`.")
+      .def(
+          "probes_made",
+          [](const ProbeSupervisor& self, const systems::Context& context) { return self.memory(context).probes_made; },
+          py::arg("context"), "Probes made so far (not counting inherited ones).");
+  py::class_<PathFollower, systems::LeafSystem>(
+      m, "PathFollower",
+      "System: inputs `path` (2 x N), `pause` (1); output `position` (2): walks `step` m per period unless paused.")
+      .def(py::init<const Eigen::Vector2d&, double, double>(), py::arg("start"), py::arg("step"), py::arg("period"),
+           "Start x-y, step m, period s.")
+      .def("get_path_input_port", PortGetter(&PathFollower::get_path_input_port), "Input `path`.")
+      .def("get_pause_input_port", PortGetter(&PathFollower::get_pause_input_port), "Input `pause`.")
+      .def("get_position_output_port", PortGetter(&PathFollower::get_position_output_port), "Output `position`.");
+
+  py::class_<ProbingRun>(m, "ProbingRun", "What a run of the probing diagram did.")
+      .def_readonly("final_position", &ProbingRun::final_position, "x-y.")
+      .def_readonly("reached_goal", &ProbingRun::reached_goal, "Within a cell of the goal.")
+      .def_readonly("time", &ProbingRun::time, "s.")
+      .def_readonly("probes_made", &ProbingRun::probes_made, "Probes.")
+      .def_readonly("collapsibilities", &ProbingRun::collapsibilities, "C of each probe.")
+      .def_readonly("trajectory", &ProbingRun::trajectory, "Walker positions per period.")
+      .def_readonly("failure", &ProbingRun::failure, "Why it stopped early.")
+      .def_readonly("probes", &ProbingRun::probes, "TraverseSimulation.ProbeRecords.")
+      .def_readonly("replans", &ProbingRun::replans, "The planner's replans.")
+      .def_readonly("collapsible_steps", &ProbingRun::collapsible_steps, "Periods ended on C >= 0.5.")
+      .def_readonly("regions_entered", &ProbingRun::regions_entered, "Region names.")
+      .def_readonly("map", &ProbingRun::map, "The analyzer's final GridMap.")
+      .def_readonly("probe_simulated_time", &ProbingRun::probe_simulated_time, "Plant time of all probes, s.");
+  m.def("BuildProbingDiagram", &BuildProbingDiagram, py::arg("scenario"), py::arg("probe_arm_urdf") = std::string(),
+        py::arg("probing") = true,
+        "The probing diagram: sensor, mapper, analyzer, planner, supervisor, arm, probe_controller, walker.");
+  m.def(
+      "RunProbingDiagram",
+      [](const TraverseScenario& scenario, const std::string& urdf, double max_time, bool probing) {
+        py::gil_scoped_release release;
+        return RunProbingDiagram(scenario, urdf, max_time, probing);
+      },
+      py::arg("scenario"), py::arg("probe_arm_urdf") = std::string(), py::arg("max_time") = 300.0,
+      py::arg("probing") = true,
+      "Builds and simulates the diagram until the goal or max_time.");
 
   py::class_<TraverseSimulation> simulation(m, "TraverseSimulation", "See, map, probe, plan, walk (cairn traverse).");
   py::class_<TraverseSimulation::Options>(simulation, "Options", "Probing on or off, threads.")
       .def(py::init<>(), "Defaults (probing on).")
       .def_readwrite("probing", &TraverseSimulation::Options::probing, "Probe questionable regions.")
-      .def_readwrite("num_threads", &TraverseSimulation::Options::num_threads, "0: one per core.");
+      .def_readwrite("num_threads", &TraverseSimulation::Options::num_threads, "0: one per core.")
+      .def_readwrite("probe_arm_urdf", &TraverseSimulation::Options::probe_arm_urdf,
+                     "data/robots/cairn_probe_arm.urdf, for the plant probe model.");
   py::class_<TraverseSimulation::ProbeRecord>(simulation, "ProbeRecord", "One probe.")
       .def_readonly("tick", &TraverseSimulation::ProbeRecord::tick, "When.")
       .def_readonly("target", &TraverseSimulation::ProbeRecord::target, "Where.")
@@ -133,6 +286,7 @@ void DefinePlanningGrid(py::module_ m) {
       .def_readonly("region", &TraverseSimulation::ProbeRecord::region, "Scenario region under the target.")
       .def_readonly("average_force", &TraverseSimulation::ProbeRecord::average_force, "N.")
       .def_readonly("collapsibility", &TraverseSimulation::ProbeRecord::collapsibility, "C.")
+      .def_readonly("simulated_time", &TraverseSimulation::ProbeRecord::simulated_time, "Plant time, s.")
       .def_readonly("path_crossed_cluster", &TraverseSimulation::ProbeRecord::path_crossed_cluster,
                     "The plan before crossed the cluster.")
       .def_readonly("path_crosses_after", &TraverseSimulation::ProbeRecord::path_crosses_after,

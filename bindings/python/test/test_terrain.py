@@ -11,6 +11,7 @@ from cairn.systems import Simulator
 from conftest import source_path
 
 SCENARIO = source_path("examples", "scenarios", "traverse", "plants_and_water.yaml")
+ARM = source_path("data", "robots", "cairn_probe_arm.urdf")
 
 
 def test_grid_map_moves_without_copying():
@@ -98,13 +99,60 @@ def test_systems_in_a_simulator():
 
 def test_traverse_scenario_probes_and_avoids_soft_soil():
     scenario = planning.TraverseScenario.Load(SCENARIO)
-    result = planning.TraverseSimulation(scenario).Run()
+    with_arm = planning.TraverseSimulation.Options()
+    with_arm.probe_arm_urdf = ARM
+    result = planning.TraverseSimulation(scenario, with_arm).Run()
     assert result.reached_goal, result.failure
     assert result.collapsible_steps == 0
     assert [p.region for p in result.probes][:1] == ["soft plants"]
     assert "hard plants" in result.regions_entered
+    assert all(p.simulated_time > 0 for p in result.probes)
     options = planning.TraverseSimulation.Options()
     options.probing = False
     blind = planning.TraverseSimulation(scenario, options).Run()
     assert blind.collapsible_steps > 0 and "soft plants" in blind.regions_entered
     assert blind.map.Layer("traversability").shape == (100, 100)
+
+
+def test_probe_arm_plant_measures_hard_soft_and_no_ground():
+    arm = planning.ProbeArmPlant.Load(ARM)
+    assert arm.reach() > 0.8
+    ground = planning.ProbeArmPlant.Ground
+    hard = arm.Run([0.0, 0.0], [0.6, 0.2], ground(0.0, 8000.0, 50.0), seed=2)
+    soft = arm.Run([0.0, 0.0], [0.6, 0.2], ground(0.0, 750.0, 50.0), seed=2)
+    water = arm.Run([0.0, 0.0], [0.6, 0.2], ground(0.0, 0.0, 0.0), seed=2)
+    assert len(hard.forces) == 20 and hard.simulated_time > 0.2
+    assert hard.true_forces[-1] == pytest.approx(8000.0 * hard.final_depth, rel=0.05)
+    assert np.mean(hard.forces) > 100.0  # C = 0
+    assert 10.0 < np.mean(soft.forces) < 20.0  # about 750 N/m x 2 cm: C about 0.85
+    assert max(water.true_forces) == 0.0
+    with pytest.raises(ValueError, match="beyond the arm's reach"):
+        arm.Run([0.0, 0.0], [3.0, 0.0], ground(0.0, 8000.0, 50.0))
+
+
+def test_probing_systems_in_a_diagram():
+    scenario = planning.TraverseScenario.Load(SCENARIO)
+    arm = planning.ProbeArm(scenario, ARM, 0.005)
+    context = arm.CreateDefaultContext()
+    arm.get_command_input_port().FixValue(context, np.array([3.5, 5.0, 1.0]))  # soft plants
+    arm.get_robot_input_port().FixValue(context, np.array([2.9, 5.0]))
+    sim = Simulator(arm, context)
+    sim.AdvanceTo(0.05)
+    assert arm.get_probing_output_port().Eval(sim.get_context())[0] == 1.0
+    assert 5.0 < arm.get_force_output_port().Eval(sim.get_context())[0] < 25.0
+    assert arm.simulated_time(sim.get_context()) > 0.0
+    walker = planning.PathFollower([0.0, 0.0], 0.1, 0.1)
+    wc = walker.CreateDefaultContext()
+    walker.get_path_input_port().FixValue(wc, np.array([[0.0, 1.0], [0.0, 0.0]]))
+    walker.get_pause_input_port().FixValue(wc, np.array([0.0]))
+    ws = Simulator(walker, wc)
+    ws.AdvanceTo(0.25)
+    np.testing.assert_allclose(walker.get_position_output_port().Eval(ws.get_context()), [0.3, 0.0])
+    sensor = planning.ScenarioSensor(scenario)
+    sc = sensor.CreateDefaultContext()
+    sensor.get_robot_input_port().FixValue(sc, np.array([3.5, 5.0]))
+    assert sensor.GetOutputPort("points_W").Eval(sc).shape[0] == 3
+    supervisor = planning.ProbeSupervisor(planning.ProbingPlanner.Options())
+    assert supervisor.get_pause_output_port().Eval(supervisor.CreateDefaultContext())[0] == 0.0
+    diagram = planning.BuildProbingDiagram(scenario, ARM)
+    assert diagram.GetSubsystemByName("arm") is not None

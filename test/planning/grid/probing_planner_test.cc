@@ -91,5 +91,24 @@ TEST(ProbingPlannerTest, RejectsBadInput) {
                            std::invalid_argument, "collapsibility 1.5");
 }
 
+// A cluster_distance far larger than the point spacing puts every point into one bucket: the pairwise comparison
+// would be quadratic (10^13 pairs for 4 million points), so the call is refused with the value and the fix.
+TEST(ProbingPlannerTest, RefusesAClusterDistanceThatMakesTheWorkQuadratic) {
+  const int n = 40000;  // 8e8 ordered pairs in one bucket, more than the limit of 2.7e8
+  Eigen::Matrix2Xd points(2, n);
+  for (int k = 0; k < n; ++k) points.col(k) = Eigen::Vector2d(0.01 * (k % 200), 0.01 * (k / 200));
+  const std::vector<int> labels(n, 0);
+  ProbingPlanner::Options options;
+  options.cluster_distance = 1000.0;
+  const ProbingPlanner huge(options);
+  CAIRN_EXPECT_THROWS_WITH(huge.FindClusters(points, labels), std::invalid_argument,
+                           "cluster_distance 1000 m needs 1.6e+09 point-pair comparisons, more than the limit");
+  // The same points at a cluster distance near their spacing cluster into one.
+  options.cluster_distance = 0.015;
+  const auto clusters = ProbingPlanner(options).FindClusters(points, labels);
+  ASSERT_EQ(clusters.size(), 1u);
+  EXPECT_EQ(clusters[0].members.size(), static_cast<std::size_t>(n));
+}
+
 }  // namespace
 }  // namespace cairn::planning

@@ -34,6 +34,18 @@ TEST(TraverseScenarioTest, ErrorsNameTheLineAndKey) {
       std::invalid_argument, "cells (size / resolution) exceed the limit of 4194304");
   CAIRN_EXPECT_THROWS_WITH(TraverseScenario::FromText("s.yaml", "start: [1, 1]\ngoal: [2, 1]\nprobe: {samples: 0}\n"),
                            std::invalid_argument, "samples");
+  CAIRN_EXPECT_THROWS_WITH(TraverseScenario::FromText("s.yaml", "start: [1, 1]\ngoal: [2, 1]\nprobe: {model: rubber}\n"),
+                           std::invalid_argument, "line 3", "probe: model 'rubber' is not one of plant, spring");
+  CAIRN_EXPECT_THROWS_WITH(TraverseScenario::FromText("s.yaml", "start: [1, 1]\ngoal: [2, 1]\nprobe: {damping: -1}\n"),
+                           std::invalid_argument, "probe: 'damping' must be in [0, 1e+06] N s/m, got -1");
+}
+
+TEST(TraverseScenarioTest, ProbeModelDefaultsToThePlant) {
+  const std::string base = "start: [1, 1]\ngoal: [2, 1]\n";
+  EXPECT_EQ(TraverseScenario::FromText("s.yaml", base).probe_model, TraverseScenario::ProbeModel::kPlant);
+  const TraverseScenario spring = TraverseScenario::FromText("s.yaml", base + "probe: {model: spring, damping: 20}\n");
+  EXPECT_EQ(spring.probe_model, TraverseScenario::ProbeModel::kSpring);
+  EXPECT_EQ(spring.probe_damping, 20.0);
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
-#include "examples/probing/scenario_sensor.h"
+#include "cairn/planning/scenarios/scenario_sensor.h"
 
 #include <cmath>
 #include <vector>
 
-namespace cairn::examples {
+namespace cairn::planning {
 
-ScenarioSensor::ScenarioSensor(planning::TraverseScenario scenario) : scenario_(std::move(scenario)) {
+ScenarioSensor::ScenarioSensor(TraverseScenario scenario) : scenario_(std::move(scenario)) {
   DeclareVectorInputPort("robot", 2);
   DeclareAbstractOutputPort("points_W", systems::Value<Eigen::Matrix3Xd>(Eigen::Matrix3Xd()),
                             [this](const systems::Context& c, systems::AbstractValue* v) {
@@ -51,4 +51,4 @@ void ScenarioSensor::Sample(const Eigen::Vector2d& robot, Eigen::Matrix3Xd* poin
   }
 }
 
-}  // namespace cairn::examples
+}  // namespace cairn::planning

@@ -1,4 +1,4 @@
-#include "examples/probing/path_follower.h"
+#include "cairn/planning/scenarios/path_follower.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,7 +6,7 @@
 #include "cairn/common/number_text.h"
 #include "cairn/systems/framework/discrete_values.h"
 
-namespace cairn::examples {
+namespace cairn::planning {
 
 PathFollower::PathFollower(const Eigen::Vector2d& start, double step, double period) : step_(step) {
   if (!(step > 0.0) || !(period > 0.0) || !std::isfinite(step) || !std::isfinite(period)) {
@@ -37,4 +37,4 @@ PathFollower::PathFollower(const Eigen::Vector2d& start, double step, double per
   });
 }
 
-}  // namespace cairn::examples
+}  // namespace cairn::planning

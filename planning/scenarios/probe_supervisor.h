@@ -11,10 +11,10 @@
 #include "cairn/planning/grid/probing_planner.h"
 #include "cairn/systems/framework/leaf_system.h"
 
-namespace cairn::examples {
+namespace cairn::planning {
 
 /// Every `period` seconds: when idle, clusters the map's semantic cells of unknown collapsibility
-/// (planning::ProbingPlanner), lets clusters grown out of a probed one inherit its C, and when the nearest
+/// (ProbingPlanner), lets clusters grown out of a probed one inherit its C, and when the nearest
 /// candidate is within reach commands the probe there and pauses the robot. While probing it waits
 /// `probe_periods` periods for the ProbeController's window, then assigns the measured C to the whole cluster
 /// (appending it to `probes`), and resumes.
@@ -31,7 +31,7 @@ namespace cairn::examples {
 /// The outputs depend on the state only, so the loop map → supervisor → probes → analyzer → map builds.
 class ProbeSupervisor final : public systems::LeafSystem {
  public:
-  ProbeSupervisor(const planning::ProbingPlanner::Options& options, double semantic_threshold, int probe_periods,
+  ProbeSupervisor(const ProbingPlanner::Options& options, double semantic_threshold, int probe_periods,
                   double period);
 
   const systems::InputPort& get_map_input_port() const { return get_input_port(0); }
@@ -43,14 +43,14 @@ class ProbeSupervisor final : public systems::LeafSystem {
 
   /// The supervisor's state.
   struct Memory {
-    planning::ProbingPlanner planner;
+    ProbingPlanner planner;
     std::vector<perception::ProbedRegion> probes;
     /// Probes actually made (the rest of `probes` are inherited).
     int probes_made{0};
     bool probing{false};
     int periods_left{0};
     Eigen::Vector2d target{Eigen::Vector2d::Zero()};
-    planning::ProbingPlanner::Cluster cluster;
+    ProbingPlanner::Cluster cluster;
     Eigen::Matrix2Xd cluster_points;
   };
   /// The state in `context`.
@@ -64,4 +64,4 @@ class ProbeSupervisor final : public systems::LeafSystem {
   int memory_state_{};
 };
 
-}  // namespace cairn::examples
+}  // namespace cairn::planning

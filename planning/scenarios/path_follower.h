@@ -5,7 +5,7 @@
 
 #include "cairn/systems/framework/leaf_system.h"
 
-namespace cairn::examples {
+namespace cairn::planning {
 
 /// Every `period` seconds moves the robot `step` metres along the path on its input (from the path's first point,
 /// the robot's cell), unless paused (the probing planner stands the robot still while it probes).
@@ -27,4 +27,4 @@ class PathFollower final : public systems::LeafSystem {
   double step_;
 };
 
-}  // namespace cairn::examples
+}  // namespace cairn::planning

@@ -1,4 +1,4 @@
-#include "examples/probing/probe_supervisor.h"
+#include "cairn/planning/scenarios/probe_supervisor.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -8,20 +8,23 @@
 #include "cairn/perception/terrain/semantic_fusion.h"
 #include "cairn/systems/framework/state.h"
 
-namespace cairn::examples {
+namespace cairn::planning {
 
-ProbeSupervisor::ProbeSupervisor(const planning::ProbingPlanner::Options& options, double semantic_threshold,
+ProbeSupervisor::ProbeSupervisor(const ProbingPlanner::Options& options, double semantic_threshold,
                                  int probe_periods, double period)
     : semantic_threshold_(semantic_threshold), probe_periods_(probe_periods) {
-  if (probe_periods < 1 || !(period > 0.0)) {
+  if (probe_periods < 1) {
     throw std::invalid_argument("ProbeSupervisor: probe_periods " + FormatShort(probe_periods) +
-                                " must be at least 1 and the period positive");
+                                " must be at least 1 (periods to wait for the probe's window)");
+  }
+  if (!(period > 0.0) || !std::isfinite(period)) {
+    throw std::invalid_argument("ProbeSupervisor: period " + FormatShort(period) + " s must be positive and finite");
   }
   const perception::GridMap empty(Eigen::Vector2i(1, 1), 1.0, Eigen::Vector2d::Zero());
   DeclareAbstractInputPort("map", systems::Value<perception::GridMap>(empty));
   DeclareVectorInputPort("robot", 2);
   DeclareVectorInputPort("collapsibility", 2);
-  memory_state_ = DeclareAbstractState(systems::Value<Memory>(Memory{planning::ProbingPlanner(options), {}, 0, false,
+  memory_state_ = DeclareAbstractState(systems::Value<Memory>(Memory{ProbingPlanner(options), {}, 0, false,
                                                                      0, Eigen::Vector2d::Zero(), {}, {}}));
   const int m = memory_state_;
   DeclareAbstractOutputPort(
@@ -95,7 +98,7 @@ void ProbeSupervisor::Update(const systems::Context& context, systems::State* ne
   }
   const Eigen::VectorXd& robot = get_robot_input_port().Eval<Eigen::VectorXd>(context);
   const auto decision = memory.planner.Decide(clusters, points, robot.head<2>());
-  if (decision.action != planning::ProbingPlanner::Decision::Action::kProbe) return;
+  if (decision.action != ProbingPlanner::Decision::Action::kProbe) return;
   memory.probing = true;
   memory.periods_left = probe_periods_;
   memory.target = decision.target;
@@ -103,4 +106,4 @@ void ProbeSupervisor::Update(const systems::Context& context, systems::State* ne
   memory.cluster_points = points;
 }
 
-}  // namespace cairn::examples
+}  // namespace cairn::planning

@@ -6,7 +6,7 @@
 #include "cairn/planning/scenarios/traverse_scenario.h"
 #include "cairn/systems/framework/leaf_system.h"
 
-namespace cairn::examples {
+namespace cairn::planning {
 
 /// The ground within the scenario's sensor range of the robot, sampled on the scenario's lattice, with per-point
 /// class probabilities (the true class at segmentation_confidence). Noise-free, so that the output is a pure
@@ -20,14 +20,14 @@ namespace cairn::examples {
 /// | output `probabilities` | Eigen::MatrixXd | 2 x points: plants, water |
 class ScenarioSensor final : public systems::LeafSystem {
  public:
-  explicit ScenarioSensor(planning::TraverseScenario scenario);
+  explicit ScenarioSensor(TraverseScenario scenario);
 
   const systems::InputPort& get_robot_input_port() const { return get_input_port(0); }
 
  private:
   void Sample(const Eigen::Vector2d& robot, Eigen::Matrix3Xd* points, Eigen::MatrixXd* probabilities) const;
 
-  planning::TraverseScenario scenario_;
+  TraverseScenario scenario_;
 };
 
-}  // namespace cairn::examples
+}  // namespace cairn::planning
