@@ -18,6 +18,7 @@ void RegisterSimulateCommand(CommandRegistry* registry);
 void RegisterOracleCommand(CommandRegistry* registry);
 void RegisterTraverseCommand(CommandRegistry* registry);
 void RegisterAffordanceCommand(CommandRegistry* registry);
+void RegisterWalkCommand(CommandRegistry* registry);
 
 void RegisterAllCommands(CommandRegistry* registry) {
   RegisterPendulumCommand(registry);
@@ -33,6 +34,7 @@ void RegisterAllCommands(CommandRegistry* registry) {
   RegisterOracleCommand(registry);
   RegisterTraverseCommand(registry);
   RegisterAffordanceCommand(registry);
+  RegisterWalkCommand(registry);
 }
 
 }  // namespace cairn::cli

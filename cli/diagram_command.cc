@@ -3,18 +3,69 @@
 #include <iostream>
 #include <memory>
 
+#include "cairn/multibody/plant/joint_pd_controller.h"
+#include "cairn/multibody/urdf_parser.h"
+#include "cairn/planning/scenarios/footstep_scenario.h"
+#include "cairn/planning/walk/walk_diagram.h"
+#include "choice_option.h"
 #include "command_registry.h"
+#include "data_directory.h"
 #include "examples/systems/pendulum_example.h"
+#include "file_checks.h"
+#include "oracle_cache.h"
+#include "usage_error.h"
 
 namespace cairn::cli {
+namespace {
+
+// The walk diagram of `cairn walk` (planning/walk) for a scenario; its footstep planner needs the oracle, loaded
+// from the cache (or built once).
+planning::WalkDiagram WalkExample(const std::string& scenario_path, const std::string& cache) {
+  CheckInputFile("--scenario", scenario_path, "a scenario YAML file");
+  const planning::FootstepScenario scenario = planning::FootstepScenario::Load(scenario_path);
+  const planning::WalkingObjective objective = planning::ParseWalkingObjective(scenario.objective());
+  const std::string walking = scenario.robot().empty() ? DataDirectory() + "/robots/cairn_humanoid_walking.yaml"
+                                                       : scenario.robot();
+  const auto walking_model = std::make_shared<const planning::WalkingModel>(planning::WalkingModel::Load(walking));
+  const auto oracle = std::make_shared<const planning::TransitionOracle>(
+      LoadOrBuildOracle(cache.empty() ? DefaultOracleCache() : cache, *walking_model, objective));
+  multibody::UrdfOptions urdf;
+  urdf.floating_base = true;
+  const auto robot = std::make_shared<const multibody::Model>(
+      multibody::ParseUrdfFile(DataDirectory() + "/robots/cairn_humanoid.urdf", urdf));
+  const auto controller = std::make_shared<const multibody::JointPdController>(
+      multibody::JointPdController::Load(*robot, DataDirectory() + "/robots/cairn_humanoid_control.yaml"));
+  return planning::BuildWalkDiagram(
+      planning::WalkSetupFromScenario(scenario, oracle, walking_model, objective, robot, controller));
+}
+
+}  // namespace
 
 void RegisterDiagramCommand(CommandRegistry* registry) {
   registry->Add("diagram", "Print the example diagram (systems and connections, or Graphviz with --dot)",
                 [](CLI::App& app) -> CommandAction {
                   auto dot = std::make_shared<bool>(false);
                   app.add_flag("--dot", *dot, "Print Graphviz dot (render with: cairn diagram --dot | dot -Tpng)");
-                  return [dot]() {
-                    const auto diagram = examples::BuildPendulumDiagram(examples::PendulumExampleOptions{});
+                  auto example = std::make_shared<std::string>("pendulum");
+                  AddChoiceOption(app, "--example", example.get(), "Which diagram", {"pendulum", "walk"});
+                  auto scenario = std::make_shared<std::string>();
+                  app.add_option("--scenario", *scenario, "With --example walk: the scenario YAML (docs/walk.md)");
+                  auto cache = std::make_shared<std::string>();
+                  app.add_option("--oracle-cache", *cache,
+                                 "With --example walk: folder caching transition oracles (default "
+                                 "$XDG_CACHE_HOME/cairn/oracles)");
+                  return [dot, example, scenario, cache]() {
+                    planning::WalkDiagram walk;
+                    std::unique_ptr<systems::Diagram> pendulum;
+                    if (*example == "walk") {
+                      if (scenario->empty()) {
+                        throw UsageError("--example walk needs --scenario S.yaml (e.g. examples/scenarios/flat.yaml)");
+                      }
+                      walk = WalkExample(*scenario, *cache);
+                    } else {
+                      pendulum = examples::BuildPendulumDiagram(examples::PendulumExampleOptions{});
+                    }
+                    const systems::Diagram* diagram = pendulum ? pendulum.get() : walk.diagram.get();
                     if (*dot) {
                       std::cout << diagram->GetGraphvizString();
                       return 0;

@@ -24,6 +24,7 @@
 #include "data_directory.h"
 #include "file_checks.h"
 #include "numeric_option.h"
+#include "oracle_cache.h"
 #include "plan_image.h"
 #include "whole_body_output.h"
 #include "progress_bar.h"
@@ -44,32 +45,9 @@ struct PlanArguments {
   bool whole_body{false};
 };
 
-// $XDG_CACHE_HOME/cairn/oracles, else ~/.cache/cairn/oracles, else a folder in the working directory.
-std::string DefaultOracleCache() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
-    return std::string(xdg) + "/cairn/oracles";
-  }
-  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
-    return std::string(home) + "/.cache/cairn/oracles";
-  }
-  return ".cairn-cache/oracles";
-}
-
 // The files `--out` holds; the folder is replaced as a whole (AtomicOutputDirectory).
 bool IsPlanOutput(const std::string& name) {
   return name == "plan.json" || name == "plan.png" || name == "trajectory.json" || name == "trajectory.png";
-}
-
-// The oracle from the cache folder, or built (with a progress bar) and saved there by
-// TransitionOracle::LoadOrBuild, which creates the folder. A cache that cannot be created or written is no reason
-// to fail: the library warns on stderr and the table is used from memory, not kept.
-TransitionOracle LoadOrBuildOracle(const std::string& cache, const WalkingModel& model, WalkingObjective objective) {
-  const OracleGrid grid = OracleGrid::Default(model);
-  const std::string path = cache + "/" + model.name() + "-" + to_string(objective) + ".oracle";
-  OracleBuildOptions build;
-  ProgressBar bar = ProgressBar::ForStderr("building the transition oracle");
-  build.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
-  return TransitionOracle::LoadOrBuild(path, model, objective, grid, build, &std::cerr);
 }
 
 // The plan as JSON. With `with_wall_times` it also holds the search's and the refinement's wall-clock times

@@ -21,6 +21,7 @@ CORE_PACKAGES=(
   liburdfdom-dev libtinyxml-dev libopencv-dev libopencv-contrib-dev libbullet-dev libbullet-extras-dev
   pybind11-dev python3-dev python3-numpy libgtest-dev libgmock-dev libbenchmark-dev libyaml-cpp-dev
   libcli11-dev nlohmann-json3-dev python3-pytest python3-matplotlib libopenmpi-dev openmpi-bin
+  libjs-three chromium  # three.js inlined by the HTML viewers (visualization/); the viewer test's headless browser
 )
 # Peers and reference data: used by cross-check tests and benchmarks only, never linked into Cairn's libraries.
 PEER_PACKAGES=(

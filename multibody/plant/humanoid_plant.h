@@ -47,6 +47,9 @@ class HumanoidPlant final : public systems::LeafSystem {
   const Model& model() const { return model_; }
   /// The options.
   const HumanoidPlantOptions& options() const { return options_; }
+  /// Everything the plant has measured so far in `context` (its abstract state): what the outputs show, plus
+  /// whether and why it fell, which the outputs do not (a run with stop_on_fall false goes on after a fall).
+  const HumanoidMeasurements& measurements(const systems::Context& context) const { return Measurements(context); }
 
  private:
   struct Engine;

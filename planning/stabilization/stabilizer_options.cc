@@ -19,6 +19,16 @@ void CheckRange(const char* name, double value, double lo, double hi, bool open_
 }
 }  // namespace
 
+StabilizerOptions WalkingStabilizerOptions(const std::string& method) {
+  StabilizerOptions options;
+  options.method = method;
+  options.contact_timing = true;
+  options.waist_orientation = "upright";
+  options.cart_table_start = true;
+  options.crouch = 0.06;
+  return options;
+}
+
 void ValidateStabilizerOptions(const StabilizerOptions& o) {
   if (o.method != "fft" && o.method != "preview" && o.method != "none") {
     throw std::invalid_argument("StabilizerOptions: method '" + o.method + "' is unknown; use fft, preview or none");

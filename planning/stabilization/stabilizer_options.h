@@ -66,6 +66,11 @@ struct StabilizerOptions {
   std::string waist_frame{"pelvis"};
 };
 
+/// The defaults with the settings a walk in the plant needs (docs/stabilization.md, "Walking it in the plant"):
+/// contact timing, an upright waist, the cart-table start and a 6 cm crouch, with `method`. The defaults stay the
+/// thesis' procedure; these are the ones measured to walk the four-step test plan without a fall (fft, preview).
+StabilizerOptions WalkingStabilizerOptions(const std::string& method = "fft");
+
 /// Throws std::invalid_argument naming the first option out of range and its valid range.
 void ValidateStabilizerOptions(const StabilizerOptions& options);
 

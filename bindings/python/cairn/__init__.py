@@ -1,9 +1,9 @@
 """Cairn from Python: block diagrams, mathematical programs, multibody algorithms, perception and planning.
 
 The submodules mirror the C++ folders: cairn.systems, cairn.optimization, cairn.multibody, cairn.perception,
-cairn.planning (and cairn.examples, the example systems). Everything is implemented in C++ (the extension module
-cairn._cairn); numpy arrays cross without copies where the memory layouts agree (see README, "Using Cairn from
-Python").
+cairn.planning, cairn.visualization (and cairn.examples, the example systems). Everything is implemented in C++
+(the extension module cairn._cairn); numpy arrays cross without copies where the memory layouts agree (see README,
+"Using Cairn from Python").
 """
 
 import os as _os
@@ -17,11 +17,12 @@ optimization = _cairn.optimization
 multibody = _cairn.multibody
 perception = _cairn.perception
 planning = _cairn.planning
+visualization = _cairn.visualization
 examples = _cairn.examples
 
 # `import cairn.systems` and pickling (which imports a class's __module__, cairn._cairn.<name>) need the
 # submodules in sys.modules under both names.
-for _name in ("systems", "optimization", "multibody", "perception", "planning", "examples"):
+for _name in ("systems", "optimization", "multibody", "perception", "planning", "visualization", "examples"):
     _module = getattr(_cairn, _name)
     _sys.modules[__name__ + "." + _name] = _module
     _sys.modules[__name__ + "._cairn." + _name] = _module
@@ -36,4 +37,4 @@ def data_dir():
     return None
 
 
-__all__ = ["systems", "optimization", "multibody", "perception", "planning", "examples", "data_dir", "__version__"]
+__all__ = ["systems", "optimization", "multibody", "perception", "planning", "visualization", "examples", "data_dir", "__version__"]

@@ -43,6 +43,10 @@ void DefinePlanningTrajectory(py::module_ m);
 void DefinePlanningTerrain(py::module_ m);
 /// cairn.planning, stabilisation part: Stabilizer, StabilizeTrajectory, preview control (after DefinePlanningTrajectory).
 void DefinePlanningStabilization(py::module_ m);
+/// cairn.planning, walk part: the walk diagram, its run and the reference player (after DefinePlanningStabilization).
+void DefinePlanningWalk(py::module_ m);
+/// cairn.visualization: the HTML motion viewer.
+void DefineVisualization(py::module_ m);
 /// cairn.examples: the example systems the C++ examples are built from.
 void DefineExamples(py::module_ m);
 

@@ -1,5 +1,6 @@
 // The extension module cairn._cairn; the package cairn (cairn/__init__.py) exposes its submodules as
-// cairn.systems, cairn.optimization, cairn.multibody, cairn.perception, cairn.planning and cairn.examples.
+// cairn.systems, cairn.optimization, cairn.multibody, cairn.perception, cairn.planning, cairn.visualization and
+// cairn.examples.
 
 #include <pybind11/pybind11.h>
 
@@ -32,6 +33,8 @@ PYBIND11_MODULE(_cairn, m) {
   cairn::python::DefinePlanningTerrain(planning);
   cairn::python::DefinePlanningGrid(planning);
   cairn::python::DefinePlanningStabilization(planning);
+  cairn::python::DefinePlanningWalk(planning);
+  cairn::python::DefineVisualization(m.def_submodule("visualization", "HTML viewers: cairn::visualization."));
   cairn::python::DefineExamples(m.def_submodule("examples", "The example systems of examples/systems."));
   cairn::python::FixDynamicAttributeTraversal(m);
 }

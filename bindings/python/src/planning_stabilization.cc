@@ -79,6 +79,10 @@ void DefinePlanningStabilization(py::module_ m) {
       .def_readonly("report", &StabilizedTrajectory::report, "The report.")
       .def("duration", &StabilizedTrajectory::duration, "s.");
 
+  m.def("WalkingStabilizerOptions", &WalkingStabilizerOptions, py::arg("method") = "fft",
+        "The defaults with what a walk in the plant needs: contact timing, an upright waist, the cart-table start, "
+        "a 6 cm crouch.");
+
   m.def(
       "StabilizeTrajectory",
       [](const multibody::Model& model, const WholeBodyTrajectory& trajectory, const StabilizerOptions& options) {

@@ -4,7 +4,7 @@ import inspect
 
 import cairn
 
-SUBMODULES = ["systems", "optimization", "multibody", "perception", "planning", "examples"]
+SUBMODULES = ["systems", "optimization", "multibody", "perception", "planning", "visualization", "examples"]
 
 
 def own_text(doc, name):

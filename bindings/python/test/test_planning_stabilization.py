@@ -103,3 +103,10 @@ def test_walking_options_are_validated(model):
     options.crouch = 0.5
     with pytest.raises(ValueError, match="crouch 0.5 m must be in"):
         planning.Stabilizer(model, options)
+
+
+def test_the_walking_options_are_the_defaults_with_contact_timing_and_a_crouch():
+    options = planning.WalkingStabilizerOptions("preview")
+    assert options.method == "preview" and options.contact_timing and options.cart_table_start
+    assert options.waist_orientation == "upright" and abs(options.crouch - 0.06) < 1e-12
+    assert not planning.StabilizerOptions().contact_timing

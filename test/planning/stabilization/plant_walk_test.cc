@@ -56,19 +56,9 @@ Walked Walk(const StabilizedTrajectory& reference) {
   return {monitor.fallen(), monitor.fall_time(), monitor.soles()[0].position, monitor.soles()[1].position};
 }
 
-StabilizerOptions WalkingOptions(const std::string& method) {
-  StabilizerOptions options;
-  options.method = method;
-  options.contact_timing = true;
-  options.waist_orientation = "upright";
-  options.cart_table_start = true;
-  options.crouch = 0.06;
-  return options;
-}
-
 TEST(PlantWalkTest, TheStabilisedFourStepPlanIsWalkedWithoutAFallAndUnstabilisedItFalls) {
   const auto model = test::Humanoid();
-  const StabilizedTrajectory fft = StabilizeTrajectory(model, test::FlatTrajectory(), WalkingOptions("fft"));
+  const StabilizedTrajectory fft = StabilizeTrajectory(model, test::FlatTrajectory(), WalkingStabilizerOptions("fft"));
   // The compensation converges: the motion's ZMP stays inside the support polygons.
   EXPECT_LT(fft.report.rms_error_after, 0.01) << fft.report.message;
   EXPECT_GT(fft.report.min_support_margin_after, 0.0) << fft.report.message;
@@ -80,7 +70,7 @@ TEST(PlantWalkTest, TheStabilisedFourStepPlanIsWalkedWithoutAFallAndUnstabilised
   EXPECT_LT((walked.left_sole.head<2>() - Eigen::Vector2d(0.6, 0.1)).norm(), 0.1) << walked.left_sole.transpose();
   EXPECT_LT((walked.right_sole.head<2>() - Eigen::Vector2d(0.6, -0.1)).norm(), 0.1) << walked.right_sole.transpose();
 
-  const StabilizedTrajectory none = StabilizeTrajectory(model, test::FlatTrajectory(), WalkingOptions("none"));
+  const StabilizedTrajectory none = StabilizeTrajectory(model, test::FlatTrajectory(), WalkingStabilizerOptions("none"));
   EXPECT_GT(none.report.rms_error_after, 0.1);
   EXPECT_TRUE(Walk(none).fell) << "the unstabilised motion was walked without a fall";
 }

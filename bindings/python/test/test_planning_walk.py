@@ -1,0 +1,106 @@
+"""cairn.planning, walk: the walk diagram (footsteps -> whole body -> stabiliser -> player -> plant), its run, the
+scenario's plant boxes, the reference player; cairn.visualization's HTML viewer."""
+
+import os
+
+import numpy as np
+import pytest
+
+import cairn.multibody as mb
+import cairn.planning as planning
+import cairn.visualization as viz
+from conftest import source_path
+
+HUMANOID = source_path("data", "robots", "cairn_humanoid.urdf")
+CONTROL = source_path("data", "robots", "cairn_humanoid_control.yaml")
+
+SHORT_WALK = """name: short walk
+terrain:
+  min: [-0.5, -1.0]
+  max: [1.5, 1.0]
+  regions:
+    - {name: floor, box: {min: [-0.5, -1.0], max: [1.5, 1.0]}, friction: 0.8}
+start: {left: [0.0, 0.1, 0.0], right: [0.0, -0.1, 0.0]}
+goal: {left: [0.3, 0.1, 0.0], right: [0.3, -0.1, 0.0], tolerance: 0.1}
+planner: {time_limit: 600, max_expansions: 5000}
+"""
+
+
+@pytest.fixture(scope="module")
+def robot():
+    options = mb.UrdfOptions()
+    options.floating_base = True
+    return mb.ParseUrdfFile(HUMANOID, options)
+
+
+@pytest.fixture(scope="module")
+def scenario(tmp_path_factory):
+    path = tmp_path_factory.mktemp("walk") / "short.yaml"
+    path.write_text(SHORT_WALK)
+    return planning.FootstepScenario.Load(str(path))
+
+
+def setup_for(scenario, oracle, walking_model, robot):
+    controller = mb.JointPdController.Load(robot, CONTROL)
+    setup = planning.WalkSetupFromScenario(scenario, oracle, walking_model,
+                                           planning.WalkingObjective.kComWorkPlusHeat, robot, controller)
+    setup.stabilizer.control_period = 0.01
+    return setup
+
+
+def test_the_scenario_becomes_one_plant_box_with_its_friction(scenario):
+    boxes = planning.ScenarioTerrainBoxes(scenario)
+    assert len(boxes) == 1
+    assert boxes[0].name == "floor" and boxes[0].friction == pytest.approx(0.8)
+    # The box's top face is the ground, z = 0.
+    assert boxes[0].X_WB.translation()[2] + 0.5 * boxes[0].size[2] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_the_walk_diagram_settles_and_the_plant_walks_the_reference(scenario, oracle, walking_model, robot):
+    setup = setup_for(scenario, oracle, walking_model, robot)
+    assert setup.stabilizer.contact_timing and setup.stabilizer.method == "fft"
+    walk = planning.BuildWalkDiagram(setup)
+    names = [s.get_name() for s in walk.diagram.GetSystems()]
+    assert {"footsteps", "trajectory", "stabilizer", "player", "plant"} <= set(names)
+    options = planning.WalkRunOptions()
+    options.settle_time = 0.2
+    record = planning.RunWalk(walk, options)
+    assert record.start.ready, record.start.reason
+    assert record.plan.found and record.trajectory.found and record.reference.report.success
+    assert record.samples[0].time == 0.0
+    assert np.allclose(record.samples[0].q, record.reference.q[0])
+    assert record.fell == bool(record.fall_reason)
+    assert record.duration <= record.reference.duration() + options.settle_time + 1e-9
+    energies = [s.com_energy for s in record.samples]
+    assert all(b >= a - 1e-12 for a, b in zip(energies, energies[1:]))
+
+
+def test_the_player_interpolates_between_samples_and_holds_the_last(robot, scenario, oracle, walking_model):
+    walk = planning.BuildWalkDiagram(setup_for(scenario, oracle, walking_model, robot))
+    record = planning.RunWalk(walk, planning.WalkRunOptions())
+    reference = record.reference
+    player = planning.StabilizedReferencePlayer(robot)
+    nq = robot.nq()
+    half = player.Sample(reference, 0.5 * reference.period)
+    assert np.allclose(half[7:nq], 0.5 * (reference.q[0][7:] + reference.q[1][7:]))
+    end = player.Sample(reference, reference.duration() + 1.0)
+    assert np.allclose(end[:nq], reference.q[-1]) and np.all(end[nq:] == 0.0)
+    with pytest.raises(RuntimeError):
+        player.Sample(planning.StabilizedTrajectory(), 0.0)
+
+
+def test_the_viewer_page_inlines_three_js_and_refuses_a_bad_scene(robot, tmp_path):
+    if not os.path.exists(viz.DefaultThreeJsPath()):
+        pytest.skip("libjs-three is not installed")
+    scene = viz.MotionScene()
+    scene.title = "standing"
+    box = viz.SceneBox()
+    box.name, box.size, box.friction = "floor", np.array([2.0, 2.0, 0.1]), 0.8
+    scene.boxes = [box]
+    q = mb.NeutralConfiguration(robot)
+    scene.times, scene.q = [0.0, 0.5], [q, q]
+    page = viz.MotionHtml(robot, scene)
+    assert page.startswith("<!DOCTYPE html>") and "standing" in page and "THREE" in page
+    scene.times = [0.5, 0.0]
+    with pytest.raises(ValueError, match="comes before the previous frame"):
+        viz.MotionHtml(robot, scene)

@@ -1,0 +1,322 @@
+// `cairn walk`: the footstep plan, its whole-body trajectory and its stabilised reference walked by the humanoid in
+// the Bullet plant on the scenario's terrain with its true friction -- one diagram (planning/walk) run by the
+// Simulator. Writes walk.json, plots of the ZMP, the COM and the per-step predictions against the measurements, and
+// an HTML viewer of the motion.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cairn/common/atomic_output_directory.h"
+#include "cairn/common/json_writer.h"
+#include "cairn/common/number_text.h"
+#include "cairn/multibody/data.h"
+#include "cairn/multibody/kinematics.h"
+#include "cairn/multibody/plant/joint_drive.h"
+#include "cairn/multibody/plant/joint_pd_controller.h"
+#include "cairn/multibody/urdf_parser.h"
+#include "cairn/planning/locomotion/walking_objective.h"
+#include "cairn/planning/scenarios/footstep_scenario.h"
+#include "cairn/planning/walk/scenario_terrain_boxes.h"
+#include "cairn/planning/walk/walk_diagram.h"
+#include "cairn/planning/walk/walk_run.h"
+#include "cairn/visualization/motion_html.h"
+#include "choice_option.h"
+#include "command_registry.h"
+#include "data_directory.h"
+#include "file_checks.h"
+#include "numeric_option.h"
+#include "oracle_cache.h"
+#include "walk_plots.h"
+
+namespace cairn::cli {
+namespace {
+
+using namespace cairn::planning;
+
+constexpr double kMaxSettleTime = 10.0;  // s simulated after the reference ends
+constexpr double kLogPeriod = 0.01;      // s between recorded samples
+constexpr double kViewerPeriod = 0.04;   // s between the viewer's frames (25 per second)
+
+struct WalkArguments {
+  std::string scenario;
+  std::string objective;
+  std::string stabilizer = "fft";
+  std::string out;
+  std::string oracle_cache;
+  double settle_time = 1.0;
+  double step = 1e-3;
+  bool json = false;
+};
+
+bool IsWalkOutput(const std::string& name) {
+  return name == "walk.json" || name == "walk_zmp.png" || name == "walk_com.png" || name == "walk_steps.png" ||
+         name == "walk.html";
+}
+
+// The sample recorded nearest to time t (the samples are kLogPeriod apart from t = 0).
+const WalkSample& SampleAt(const WalkRecord& record, double t) {
+  const auto k = static_cast<std::size_t>(std::max(0.0, std::round(t / kLogPeriod)));
+  return record.samples[std::min(k, record.samples.size() - 1)];
+}
+
+// Each planned step against the plant over its planned window [start, end]: the support foot's measured RCOF
+// (thesis eq. 2.2, the plant's stance that holds the middle of the swing) and the energy spent in the window.
+std::vector<WalkStepComparison> CompareSteps(const WalkRecord& record) {
+  std::vector<WalkStepComparison> steps;
+  double t = 0.0;
+  const double nan = std::nan("");
+  for (std::size_t k = 0; k < record.plan.steps.size(); ++k) {
+    const PlannedStep& step = record.plan.steps[k];
+    WalkStepComparison c;
+    c.index = static_cast<int>(k) + 1;
+    c.foot = FootSideName(step.side);
+    c.start = t;
+    c.end = t + step.transition.duration;
+    t = c.end;
+    c.predicted_rcof = step.transition.rcof;
+    c.mu_allowed = step.mu_allowed;
+    c.predicted_com_work = step.transition.com_work;
+    c.predicted_heat = step.transition.heat;
+    c.completed = !record.samples.empty() && c.end <= record.duration + 1e-9;
+    c.measured_rcof = c.measured_com_energy = c.measured_electrical_energy = nan;
+    if (!c.completed) {
+      steps.push_back(c);
+      continue;
+    }
+    const double swing_middle = c.start + step.transition.parameters.t_ds + 0.5 * step.transition.parameters.t_sw;
+    const int support = step.side == FootSide::kLeft ? 1 : 0;
+    for (const multibody::StancePhase& stance : record.stances) {
+      if (stance.foot == support && stance.start <= swing_middle && swing_middle <= stance.end) {
+        c.measured_rcof = stance.rcof;
+      }
+    }
+    const WalkSample& a = SampleAt(record, c.start);
+    const WalkSample& b = SampleAt(record, c.end);
+    c.measured_com_energy = b.com_energy - a.com_energy;
+    c.measured_electrical_energy = b.electrical_energy - a.electrical_energy;
+    steps.push_back(c);
+  }
+  return steps;
+}
+
+// Where the soles ended against the goal stance: the larger of the two feet's horizontal distances.
+// `soles` names the left and the right sole body (the plant's sole_bodies).
+double GoalDistance(const multibody::Model& robot, const std::vector<std::string>& soles, const WalkRecord& record,
+                    const StanceGoal& goal) {
+  multibody::Data data(robot);
+  multibody::ForwardKinematics(robot, data, record.samples.back().q);
+  const auto sole = [&](const std::string& name) {
+    return data.X_world[static_cast<std::size_t>(robot.GetBodyIndex(name))].translation().head<2>().eval();
+  };
+  const double left = (sole(soles.at(0)) - Eigen::Vector2d(goal.stance.left.x, goal.stance.left.y)).norm();
+  const double right = (sole(soles.at(1)) - Eigen::Vector2d(goal.stance.right.x, goal.stance.right.y)).norm();
+  return std::max(left, right);
+}
+
+void MaybeNumber(JsonWriter& json, const char* key, double value, JsonWriter::NumberFormat format) {
+  json.Key(key);
+  if (std::isfinite(value)) {
+    json.Number(value, format);
+  } else {
+    json.Null();
+  }
+}
+
+std::string WalkJson(const FootstepScenario& scenario, const std::string& objective, const std::string& stabilizer,
+                     const multibody::Model& robot, const std::vector<std::string>& soles,
+                     const WalkRecord& record, const std::vector<WalkStepComparison>& steps) {
+  const JsonWriter::NumberFormat f6 = JsonWriter::Fixed(6), f3 = JsonWriter::Fixed(3);
+  JsonWriter json;
+  json.BeginObject().Key("scenario").String(scenario.name()).Key("objective").String(objective);
+  json.Key("stabilizer").String(stabilizer).Key("walked").Bool(record.start.ready);
+  json.Key("reason").String(record.start.reason);
+  json.Key("plan").BeginObject().Key("found").Bool(record.plan.found).Key("steps").Integer(record.plan.steps.size());
+  json.Key("duration").Number(record.plan.duration, f6).Key("energy_J").Number(record.plan.energy, f6);
+  json.Key("max_rcof").Number(record.plan.max_rcof, f6).EndObject();
+  json.Key("trajectory").BeginObject().Key("found").Bool(record.trajectory.found);
+  json.Key("waypoints").Integer(record.trajectory.waypoints.size());
+  json.Key("message").String(record.trajectory.report.message).EndObject();
+  const StabilizationReport& r = record.reference.report;
+  json.Key("stabilization").BeginObject().Key("success").Bool(r.success).Key("method").String(r.method);
+  json.Key("samples").Integer(record.reference.q.size()).Key("period").Number(record.reference.period, f6);
+  json.Key("rms_zmp_error_before").Number(r.rms_error_before, f6).Key("rms_zmp_error_after").Number(r.rms_error_after, f6);
+  json.Key("max_zmp_error_after").Number(r.max_error_after, f6);
+  json.Key("min_support_margin_after").Number(r.min_support_margin_after, f6).EndObject();
+  double predicted_com = 0.0, predicted_heat = 0.0;
+  for (const PlannedStep& step : record.plan.steps) {
+    predicted_com += step.transition.com_work;
+    predicted_heat += step.transition.heat;
+  }
+  if (record.start.ready) {
+    const StanceGoal& goal = scenario.goal();
+    const double distance = GoalDistance(robot, soles, record, goal);
+    json.Key("goal").BeginObject().Key("reached").Bool(!record.fell && distance <= goal.position_tolerance);
+    json.Key("distance").Number(distance, f6).Key("tolerance").Number(goal.position_tolerance, f6).EndObject();
+    json.Key("fell").Bool(record.fell).Key("fall_reason").String(record.fall_reason);
+    MaybeNumber(json, "fall_time", record.fell ? record.duration : std::nan(""), f3);
+    json.Key("executed_duration").Number(record.duration, f3);
+    json.Key("reference_duration").Number(record.reference.duration(), f6);
+    const WalkSample& last = record.samples.back();
+    json.Key("energy").BeginObject().Key("measured_com_J").Number(last.com_energy, f6);
+    json.Key("measured_electrical_J").Number(last.electrical_energy, f6);
+    json.Key("predicted_com_J").Number(predicted_com, f6).Key("predicted_heat_J").Number(predicted_heat, f6);
+    json.Key("predicted_total_J").Number(predicted_com + predicted_heat, f6).EndObject();
+    json.Key("slips").BeginArray();
+    for (const multibody::SlipEvent& slip : record.slips) {
+      json.BreakLine(2).BeginObject().Key("time").Number(slip.time, f3).Key("foot").String(slip.foot == 0 ? "left" : "right");
+      json.Key("x").Number(slip.position.x(), f6).Key("y").Number(slip.position.y(), f6);
+      json.Key("force_ratio").Number(slip.force_ratio, f6).EndObject();
+    }
+    json.EndArray();
+  }
+  json.Key("steps").BeginArray();
+  for (const WalkStepComparison& s : steps) {
+    json.BreakLine(2).BeginObject().Key("step").Integer(s.index).Key("foot").String(s.foot);
+    json.Key("start").Number(s.start, f3).Key("end").Number(s.end, f3).Key("completed").Bool(s.completed);
+    json.Key("mu_allowed").Number(s.mu_allowed, f6).Key("predicted_rcof").Number(s.predicted_rcof, f6);
+    MaybeNumber(json, "measured_rcof", s.measured_rcof, f6);
+    json.Key("predicted_com_J").Number(s.predicted_com_work, f6).Key("predicted_heat_J").Number(s.predicted_heat, f6);
+    MaybeNumber(json, "measured_com_J", s.measured_com_energy, f6);
+    MaybeNumber(json, "measured_electrical_J", s.measured_electrical_energy, f6);
+    json.EndObject();
+  }
+  json.EndArray().EndObject();
+  return json.text();
+}
+
+int Run(const WalkArguments& args) {
+  CheckInputFile("--scenario", args.scenario, "a scenario YAML file");
+  const FootstepScenario scenario = FootstepScenario::Load(args.scenario);
+  const std::string objective_name = args.objective.empty() ? scenario.objective() : args.objective;
+  const WalkingObjective objective = ParseWalkingObjective(objective_name);
+  // Before the oracle is loaded (or built): a scenario the plant cannot stand on fails now.
+  ScenarioTerrainBoxes(scenario);
+  std::optional<AtomicOutputDirectory> out;
+  if (!args.out.empty()) out.emplace(args.out, IsWalkOutput);
+
+  const std::string walking = scenario.robot().empty() ? DataDirectory() + "/robots/cairn_humanoid_walking.yaml"
+                                                       : scenario.robot();
+  CheckInputFile("the scenario's robot", walking, "a walking-model YAML file");
+  const std::string urdf_path = DataDirectory() + "/robots/cairn_humanoid.urdf";
+  const std::string control = DataDirectory() + "/robots/cairn_humanoid_control.yaml";
+  const auto walking_model = std::make_shared<const WalkingModel>(WalkingModel::Load(walking));
+  const auto oracle = std::make_shared<const TransitionOracle>(LoadOrBuildOracle(
+      args.oracle_cache.empty() ? DefaultOracleCache() : args.oracle_cache, *walking_model, objective));
+  multibody::UrdfOptions urdf;
+  urdf.floating_base = true;
+  const auto robot = std::make_shared<const multibody::Model>(multibody::ParseUrdfFile(urdf_path, urdf));
+  const auto controller =
+      std::make_shared<const multibody::JointPdController>(multibody::JointPdController::Load(*robot, control));
+
+  WalkSetup setup = WalkSetupFromScenario(scenario, oracle, walking_model, objective, robot, controller);
+  setup.stabilizer.method = args.stabilizer;
+  setup.plant.bullet.time_step = args.step;
+  setup.plant.drives = multibody::LoadJointDrives(*robot, walking);
+  setup.plant.stop_on_fall = true;
+  const WalkDiagram walk = BuildWalkDiagram(setup);
+  WalkRunOptions run;
+  run.log_period = kLogPeriod;
+  run.settle_time = args.settle_time;
+  const WalkRecord record = RunWalk(walk, run);
+  const std::vector<WalkStepComparison> steps = CompareSteps(record);
+  const std::string json =
+      WalkJson(scenario, objective_name, args.stabilizer, *robot, setup.plant.sole_bodies, record, steps);
+
+  if (out) {
+    out->WriteFile("walk.json", json + "\n");
+    if (record.start.ready) {
+      out->WriteFile("walk_zmp.png", WalkZmpPng(record, setup.geometry));
+      out->WriteFile("walk_com.png", WalkComPng(record));
+      out->WriteFile("walk_steps.png", WalkStepsPng(steps));
+      visualization::MotionScene scene;
+      scene.title = "cairn walk: " + scenario.name() + " (" + args.stabilizer + ")";
+      for (const multibody::TerrainBox& box : setup.plant_terrain) {
+        scene.boxes.push_back({box.name, box.X_WB, box.size, box.friction});
+      }
+      // 25 frames per second, fewer for a walk too long for the viewer's frame limit.
+      const auto every = std::max(static_cast<std::size_t>(std::lround(kViewerPeriod / kLogPeriod)),
+                                  record.samples.size() / (visualization::kMaxMotionFrames - 1) + 1);
+      for (std::size_t k = 0; k < record.samples.size(); k += every) {
+        scene.times.push_back(record.samples[k].time);
+        scene.q.push_back(record.samples[k].q);
+      }
+      if ((record.samples.size() - 1) % every != 0) {  // the last sample (a fall) is always a frame
+        scene.times.push_back(record.samples.back().time);
+        scene.q.push_back(record.samples.back().q);
+      }
+      out->WriteFile("walk.html", visualization::MotionHtml(*robot, scene));
+    }
+    out->Commit();
+  }
+  if (args.json) {
+    // The wall times per stage are for this printout only (the files hold no timing, so runs compare equal).
+    std::string line = json;
+    line.pop_back();
+    JsonWriter timing;
+    timing.BeginObject().Key("footsteps_s").Number(record.start.seconds.footsteps, JsonWriter::Fixed(3));
+    timing.Key("trajectory_s").Number(record.start.seconds.trajectory, JsonWriter::Fixed(3));
+    timing.Key("stabilizer_s").Number(record.start.seconds.stabilizer, JsonWriter::Fixed(3));
+    timing.Key("plant_s").Number(record.plant_seconds, JsonWriter::Fixed(3)).EndObject();
+    std::printf("%s, \"seconds\": %s}\n", line.c_str(), timing.text().c_str());
+    return 0;
+  }
+  std::printf("walk       %s (objective %s, stabiliser %s)\n", scenario.name().c_str(), objective_name.c_str(),
+              args.stabilizer.c_str());
+  std::printf("plan       %s: %zu steps, %.3f s, %.1f J predicted\n", record.plan.found ? "found" : "NOT FOUND",
+              record.plan.steps.size(), record.plan.duration, record.plan.energy);
+  if (!record.start.ready) {
+    std::printf("not walked %s\n", record.start.reason.c_str());
+  } else {
+    const WalkSample& last = record.samples.back();
+    std::printf("reference  %zu samples at %.4g s; ZMP RMS error %.4f -> %.4f m\n", record.reference.q.size(),
+                record.reference.period, record.reference.report.rms_error_before,
+                record.reference.report.rms_error_after);
+    std::printf("walked     %.3f s of %.3f s; goal distance %.3f m (tolerance %.3f m)\n", record.duration,
+                record.reference.duration() + args.settle_time, GoalDistance(*robot, setup.plant.sole_bodies, record, scenario.goal()),
+                scenario.goal().position_tolerance);
+    std::printf("fall       %s\n", record.fell ? record.fall_reason.c_str() : "none");
+    std::printf("slips      %zu\n", record.slips.size());
+    std::printf("energy     E_COM %.2f J, E_ele %.2f J measured\n", last.com_energy, last.electrical_energy);
+    std::printf("time       footsteps %.2f s, trajectory %.2f s, stabiliser %.2f s, plant %.2f s\n",
+                record.start.seconds.footsteps, record.start.seconds.trajectory, record.start.seconds.stabilizer,
+                record.plant_seconds);
+  }
+  if (out) std::printf("wrote      %s/walk.json%s\n", args.out.c_str(),
+                       record.start.ready ? ", walk_zmp.png, walk_com.png, walk_steps.png, walk.html" : "");
+  return 0;
+}
+
+}  // namespace
+
+void RegisterWalkCommand(CommandRegistry* registry) {
+  registry->Add("walk", "Plan a scenario's walk, stabilise it and walk it in the Bullet plant (one diagram)",
+                [](CLI::App& app) -> CommandAction {
+                  auto args = std::make_shared<WalkArguments>();
+                  app.add_option("--scenario", args->scenario, "Scenario YAML (docs/scenarios.md; box regions)")
+                      ->required();
+                  AddChoiceOption(app, "--objective", &args->objective, "Step objective (default: the scenario's)",
+                                  WalkingObjectiveNames());
+                  AddChoiceOption(app, "--stabilizer", &args->stabilizer, "ZMP stabilisation of the reference",
+                                  {"fft", "preview", "none"});
+                  AddNumberOption(app, "--settle-time", &args->settle_time,
+                                  "Simulated time after the reference ends [s]",
+                                  NumberRange::Closed(0.0, kMaxSettleTime));
+                  AddNumberOption(app, "--step", &args->step, "Plant time step [s]",
+                                  NumberRange::AboveAtMost(0.0, multibody::BulletPlantOptions::kMaxTimeStep));
+                  app.add_option("--out", args->out,
+                                 "Folder for walk.json, walk_zmp.png, walk_com.png, walk_steps.png, walk.html "
+                                 "(replaced as a whole)");
+                  app.add_option("--oracle-cache", args->oracle_cache,
+                                 "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
+                  app.add_flag("--json", args->json, "Print walk.json and the stages' wall times as one JSON object");
+                  return [args] { return Run(*args); };
+                });
+}
+
+}  // namespace cairn::cli

@@ -1,0 +1,152 @@
+#include <cairn/planning/walk/walk_diagram.h>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include <cairn/multibody/configuration.h>
+#include <cairn/multibody/data.h>
+#include <cairn/multibody/kinematics.h>
+#include <cairn/planning/trajectory/environment_from_obstacles.h>
+#include <cairn/planning/walk/scenario_terrain_boxes.h>
+#include <cairn/systems/framework/diagram_builder.h>
+#include <cairn/systems/primitives/constant_value_source.h>
+
+namespace cairn::planning {
+namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Joints at zero, the base above the start stance's midpoint and heading, the lower sole on its height.
+Eigen::VectorXd StandingAtStart(const multibody::Model& robot, const multibody::HumanoidPlantOptions& options,
+                                const Stance& start) {
+  Eigen::VectorXd q = multibody::NeutralConfiguration(robot);
+  const double yaw = 0.5 * (start.left.theta + start.right.theta);
+  const Eigen::Quaterniond r(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
+  q.segment<4>(3) << r.w(), r.x(), r.y(), r.z();
+  q[0] = 0.5 * (start.left.x + start.right.x);
+  q[1] = 0.5 * (start.left.y + start.right.y);
+  q[2] = 0.0;
+  multibody::Data data(robot);
+  multibody::ForwardKinematics(robot, data, q);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const std::string& sole : options.sole_bodies) {
+    lowest = std::min(lowest, data.X_world[static_cast<std::size_t>(robot.GetBodyIndex(sole))].translation().z());
+  }
+  q[2] = std::max(start.left.z, start.right.z) - lowest;
+  return q;
+}
+
+}  // namespace
+
+WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_ptr<const StepCostModel> cost_model,
+                                std::shared_ptr<const WalkingModel> walking_model, WalkingObjective objective,
+                                std::shared_ptr<const multibody::Model> robot,
+                                std::shared_ptr<const multibody::JointPdController> controller) {
+  WalkSetup setup;
+  setup.cost_model = std::move(cost_model);
+  setup.objective = objective;
+  if (walking_model != nullptr) {
+    setup.geometry.foot_length = walking_model->foot_length();
+    setup.geometry.foot_width = walking_model->foot_width();
+    setup.geometry.body_half_extents = walking_model->body_half_extents();
+    setup.geometry.body_bottom = walking_model->body_box_bottom();
+  }
+  setup.refine_model = std::move(walking_model);
+  setup.planner = scenario.planner();
+  setup.terrain = std::make_shared<const TerrainMap>(scenario.BuildTerrain());
+  setup.start = scenario.start();
+  setup.goal = scenario.goal();
+  setup.environment = EnvironmentFromObstacles(scenario.obstacles());
+  setup.stabilizer = WalkingStabilizerOptions("fft");
+  setup.robot = std::move(robot);
+  setup.controller = std::move(controller);
+  setup.plant_terrain = ScenarioTerrainBoxes(scenario);
+  return setup;
+}
+
+WalkDiagram BuildWalkDiagram(const WalkSetup& setup) {
+  if (setup.cost_model == nullptr) throw std::invalid_argument("BuildWalkDiagram: the step cost model is null");
+  if (setup.terrain == nullptr) throw std::invalid_argument("BuildWalkDiagram: the planner's terrain is null");
+  if (setup.robot == nullptr) throw std::invalid_argument("BuildWalkDiagram: the robot model is null");
+  if (setup.controller == nullptr) throw std::invalid_argument("BuildWalkDiagram: the PD controller is null");
+  systems::DiagramBuilder builder;
+  WalkDiagram walk;
+  auto* start = builder.AddNamedSystem<systems::ConstantValueSource<Stance>>("start", setup.start);
+  auto* goal = builder.AddNamedSystem<systems::ConstantValueSource<StanceGoal>>("goal", setup.goal);
+  auto* terrain = builder.AddNamedSystem<systems::ConstantValueSource<TerrainMap>>("terrain", *setup.terrain);
+  auto* environment =
+      builder.AddNamedSystem<systems::ConstantValueSource<std::vector<EnvironmentBox>>>("environment", setup.environment);
+  auto* footsteps = builder.AddNamedSystem<FootstepPlanner>("footsteps", setup.cost_model, setup.geometry,
+                                                            setup.planner, setup.refine_model, setup.objective);
+  auto* trajectory = builder.AddNamedSystem<TrajectoryOptimizer>("trajectory", setup.robot, setup.trajectory);
+  auto* stabilizer = builder.AddNamedSystem<Stabilizer>("stabilizer", setup.robot, setup.stabilizer);
+  auto* player = builder.AddNamedSystem<StabilizedReferencePlayer>("player", setup.robot);
+  auto* plant = builder.AddNamedSystem<multibody::HumanoidPlant>(
+      "plant", *setup.robot, setup.plant_terrain, *setup.controller,
+      StandingAtStart(*setup.robot, setup.plant, setup.start), setup.plant);
+  builder.Connect(terrain->GetOutputPort("y0"), footsteps->get_terrain_input_port());
+  builder.Connect(start->GetOutputPort("y0"), footsteps->get_start_input_port());
+  builder.Connect(goal->GetOutputPort("y0"), footsteps->get_goal_input_port());
+  builder.Connect(footsteps->get_plan_output_port(), trajectory->get_plan_input_port());
+  builder.Connect(environment->GetOutputPort("y0"), trajectory->get_environment_input_port());
+  builder.Connect(trajectory->get_trajectory_output_port(), stabilizer->get_trajectory_input_port());
+  builder.Connect(stabilizer->get_reference_output_port(), player->get_reference_input_port());
+  builder.Connect(player->get_reference_output_port(), plant->GetInputPort("reference"));
+  walk.diagram = builder.Build();
+  walk.diagram->set_name("walk");
+  walk.footsteps = footsteps;
+  walk.trajectory = trajectory;
+  walk.stabilizer = stabilizer;
+  walk.player = player;
+  walk.plant = plant;
+  return walk;
+}
+
+WalkStart InitializeWalk(const WalkDiagram& walk, systems::Simulator* simulator) {
+  if (simulator == nullptr || &simulator->get_system() != walk.diagram.get()) {
+    throw std::invalid_argument("InitializeWalk: the simulator does not simulate this walk diagram");
+  }
+  WalkStart start;
+  systems::Context& root = simulator->get_mutable_context();
+  auto t0 = std::chrono::steady_clock::now();
+  simulator->Initialize();
+  start.seconds.footsteps = SecondsSince(t0);
+  const auto& plan = walk.footsteps->get_plan_output_port().Eval<FootstepPlan>(
+      walk.diagram->GetSubsystemContext(*walk.footsteps, root));
+  if (!plan.found) {
+    start.reason = "no footstep plan: " + plan.reason;
+    return start;
+  }
+  t0 = std::chrono::steady_clock::now();
+  walk.trajectory->ExecuteForcedEvents(&walk.diagram->GetMutableSubsystemContext(*walk.trajectory, &root));
+  start.seconds.trajectory = SecondsSince(t0);
+  const auto& trajectory = walk.trajectory->get_trajectory_output_port().Eval<WholeBodyTrajectory>(
+      walk.diagram->GetSubsystemContext(*walk.trajectory, root));
+  if (!trajectory.found) {
+    start.reason = "no whole-body trajectory: " + trajectory.report.message;
+    return start;
+  }
+  t0 = std::chrono::steady_clock::now();
+  walk.stabilizer->ExecuteForcedEvents(&walk.diagram->GetMutableSubsystemContext(*walk.stabilizer, &root));
+  start.seconds.stabilizer = SecondsSince(t0);
+  const auto& reference = walk.stabilizer->get_reference_output_port().Eval<StabilizedTrajectory>(
+      walk.diagram->GetSubsystemContext(*walk.stabilizer, root));
+  if (!reference.report.success || reference.q.empty()) {
+    start.reason = "no stabilised reference: " + reference.report.message;
+    return start;
+  }
+  systems::Context& plant = walk.diagram->GetMutableSubsystemContext(*walk.plant, &root);
+  const multibody::Model& robot = walk.plant->model();
+  Eigen::VectorXd x(robot.nq() + robot.nv());
+  x << reference.q.front(), reference.v.front();
+  plant.SetDiscreteState(0, x);
+  start.ready = true;
+  return start;
+}
+
+}  // namespace cairn::planning

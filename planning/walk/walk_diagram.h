@@ -1,0 +1,112 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <cairn/multibody/model.h>
+#include <cairn/multibody/plant/humanoid_plant.h>
+#include <cairn/multibody/plant/humanoid_plant_options.h>
+#include <cairn/multibody/plant/joint_pd_controller.h>
+#include <cairn/multibody/plant/terrain_box.h>
+#include <cairn/planning/footstep/biped_geometry.h>
+#include <cairn/planning/footstep/footstep_planner.h>
+#include <cairn/planning/footstep/footstep_planner_options.h>
+#include <cairn/planning/footstep/terrain_map.h>
+#include <cairn/planning/locomotion/step_cost_model.h>
+#include <cairn/planning/locomotion/walking_model.h>
+#include <cairn/planning/locomotion/walking_objective.h>
+#include <cairn/planning/scenarios/footstep_scenario.h>
+#include <cairn/planning/stabilization/stabilized_reference_player.h>
+#include <cairn/planning/stabilization/stabilizer.h>
+#include <cairn/planning/stabilization/stabilizer_options.h>
+#include <cairn/planning/trajectory/collision_penalty.h>
+#include <cairn/planning/trajectory/trajectory_optimizer.h>
+#include <cairn/planning/trajectory/trajectory_optimizer_options.h>
+#include <cairn/systems/analysis/simulator.h>
+#include <cairn/systems/framework/diagram.h>
+
+namespace cairn::planning {
+
+/// Everything the walk diagram is built from: the planning problem, the three planners' settings and the plant.
+struct WalkSetup {
+  // Footstep planning.
+  std::shared_ptr<const StepCostModel> cost_model;       ///< prices steps (a TransitionOracle); required
+  std::shared_ptr<const WalkingModel> refine_model;      ///< refines each plan's steps (null: keep the table's)
+  WalkingObjective objective{WalkingObjective::kComWorkPlusHeat};  ///< the cost model's objective
+  BipedGeometry geometry;
+  FootstepPlannerOptions planner;                        ///< give it an expansion budget for deterministic plans
+  std::shared_ptr<const TerrainMap> terrain;             ///< the planner's view (friction already Q_{1-eta}); required
+  Stance start;
+  StanceGoal goal;
+  // Whole-body trajectory and stabilisation.
+  std::vector<EnvironmentBox> environment;               ///< obstacles for the collision penalty
+  TrajectoryOptimizerOptions trajectory;
+  StabilizerOptions stabilizer;
+  // The physics plant.
+  std::shared_ptr<const multibody::Model> robot;         ///< floating base; required
+  std::shared_ptr<const multibody::JointPdController> controller;  ///< PD gains; required
+  std::vector<multibody::TerrainBox> plant_terrain;      ///< the true world (ScenarioTerrainBoxes)
+  multibody::HumanoidPlantOptions plant;
+};
+
+/// A WalkSetup for a footstep scenario: its terrain (FootstepScenario::BuildTerrain), start, goal and planner
+/// settings, its obstacles as the trajectory's environment (EnvironmentFromObstacles) and as the plant's boxes with
+/// its regions (ScenarioTerrainBoxes), the geometry of `walking_model`'s feet and body box, and `walking_model`
+/// refining the plan's steps. The stabiliser's options are WalkingStabilizerOptions("fft") (the thesis' defaults do
+/// not walk in the plant); the trajectory and plant options are the defaults. The caller adjusts them. Throws as those functions do.
+WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_ptr<const StepCostModel> cost_model,
+                                std::shared_ptr<const WalkingModel> walking_model, WalkingObjective objective,
+                                std::shared_ptr<const multibody::Model> robot,
+                                std::shared_ptr<const multibody::JointPdController> controller);
+
+/// The walk as one diagram (thesis Fig. 5.1 from the footstep planner on), with its blocks:
+///
+///     start, goal, terrain ─► FootstepPlanner ─► TrajectoryOptimizer ─► Stabilizer ─► StabilizedReferencePlayer ─► HumanoidPlant
+///                                environment ─┘
+///
+/// Subsystem names: "start", "goal", "terrain", "environment" (constant sources), "footsteps", "trajectory",
+/// "stabilizer", "player", "plant".
+struct WalkDiagram {
+  std::unique_ptr<systems::Diagram> diagram;
+  const FootstepPlanner* footsteps{nullptr};
+  const TrajectoryOptimizer* trajectory{nullptr};
+  const Stabilizer* stabilizer{nullptr};
+  const StabilizedReferencePlayer* player{nullptr};
+  const multibody::HumanoidPlant* plant{nullptr};
+};
+
+/// Builds the walk diagram. The plant starts standing at the start stance (joints at zero, the lower sole on the
+/// start stance's height); InitializeWalk() puts it on the reference's first sample. Throws std::invalid_argument
+/// for a missing cost model, terrain, robot or controller, and as the blocks' constructors do.
+WalkDiagram BuildWalkDiagram(const WalkSetup& setup);
+
+/// Wall time of each planning stage while InitializeWalk() settled the chain, s (not part of any result).
+struct WalkSettleTimes {
+  double footsteps{0.0};   ///< Simulator::Initialize(): the footstep search (the other blocks' initial events are trivial)
+  double trajectory{0.0};  ///< the TrajectoryOptimizer's solve
+  double stabilizer{0.0};  ///< the Stabilizer's interpolation and compensation
+};
+
+/// What InitializeWalk() left in the context.
+struct WalkStart {
+  /// The chain settled on a reference the plant can follow; false: `reason` names the stage that gave none.
+  bool ready{false};
+  std::string reason;
+  WalkSettleTimes seconds;
+};
+
+/// Settles the planning chain before the plant takes a step, and puts the plant on the reference's first sample.
+///
+/// The three planners work in events: the Simulator's initialization runs every block's initialization event
+/// from the state before any is applied, so at that instant the FootstepPlanner plans while the
+/// TrajectoryOptimizer still sees "not planned yet" and the Stabilizer "not solved yet". So after
+/// simulator->Initialize() this runs the TrajectoryOptimizer's forced event (it now sees the plan), then the
+/// Stabilizer's (it sees the trajectory): each stage once, in the chain's order. Then the plant's state (q, v) is
+/// set to the reference's first sample (the plant resets its Bullet world to it), so the PD drive starts on its
+/// reference instead of jumping to it. The Stabilizer's per-step check then finds its input unchanged and keeps
+/// its reference. When a stage gives nothing (no footstep plan, no trajectory, no stabilised reference), the
+/// plant is left as built and `ready` is false: simulating would fail at the player.
+WalkStart InitializeWalk(const WalkDiagram& walk, systems::Simulator* simulator);
+
+}  // namespace cairn::planning

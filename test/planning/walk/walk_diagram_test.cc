@@ -1,0 +1,118 @@
+// The walk diagram: the planning chain settles before the plant's first step, and the plant starts on the
+// reference's first sample. (Whether the walk succeeds is the plant's business, asserted elsewhere.)
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <cairn/multibody/urdf_parser.h>
+#include <cairn/planning/walk/walk_diagram.h>
+#include <cairn/planning/walk/walk_run.h>
+
+#include "../support/shared_oracle.h"
+#include "expect_throws.h"
+
+namespace cairn::planning {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Flat ground, the goal 0.3 m ahead: a plan of a few steps under an expansion budget.
+WalkSetup ShortWalk() {
+  const fs::path path = fs::temp_directory_path() / ("walk_diagram_" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream(path) << R"(name: short walk
+terrain:
+  min: [-0.5, -1.0]
+  max: [1.5, 1.0]
+  regions:
+    - {name: floor, box: {min: [-0.5, -1.0], max: [1.5, 1.0]}, friction: 0.8}
+start: {left: [0.0, 0.1, 0.0], right: [0.0, -0.1, 0.0]}
+goal: {left: [0.3, 0.1, 0.0], right: [0.3, -0.1, 0.0], tolerance: 0.1}
+planner: {time_limit: 600, max_expansions: 5000}
+)";
+  const FootstepScenario scenario = FootstepScenario::Load(path.string());
+  fs::remove(path);
+  multibody::UrdfOptions urdf;
+  urdf.floating_base = true;
+  const auto robot = std::make_shared<const multibody::Model>(
+      multibody::ParseUrdfFile(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid.urdf", urdf));
+  const auto controller = std::make_shared<const multibody::JointPdController>(multibody::JointPdController::Load(
+      *robot, std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_control.yaml"));
+  WalkSetup setup = WalkSetupFromScenario(scenario, test::SharedOracle(WalkingObjective::kComWorkPlusHeat),
+                                          test::SharedWalkingModel(), WalkingObjective::kComWorkPlusHeat, robot,
+                                          controller);
+  setup.stabilizer.method = "preview";
+  setup.stabilizer.control_period = 0.01;
+  return setup;
+}
+
+TEST(WalkDiagramTest, SettlesTheChainThenStartsThePlantOnTheReference) {
+  const WalkDiagram walk = BuildWalkDiagram(ShortWalk());
+  systems::Simulator simulator(*walk.diagram);
+  const WalkStart start = InitializeWalk(walk, &simulator);
+  ASSERT_TRUE(start.ready) << start.reason;
+  const systems::Context& root = simulator.get_context();
+  const auto& plan =
+      walk.footsteps->get_plan_output_port().Eval<FootstepPlan>(walk.diagram->GetSubsystemContext(*walk.footsteps, root));
+  const auto& trajectory = walk.trajectory->get_trajectory_output_port().Eval<WholeBodyTrajectory>(
+      walk.diagram->GetSubsystemContext(*walk.trajectory, root));
+  const auto& reference = walk.stabilizer->get_reference_output_port().Eval<StabilizedTrajectory>(
+      walk.diagram->GetSubsystemContext(*walk.stabilizer, root));
+  ASSERT_TRUE(plan.found);
+  ASSERT_TRUE(trajectory.found);
+  ASSERT_TRUE(reference.report.success);
+  // The chain is consistent: the trajectory lasts as long as the plan; the reference (with the walking options'
+  // contact timing) one more double support, in which the last step's swing foot is set down and loaded.
+  EXPECT_NEAR(trajectory.waypoints.back().time, plan.duration, 1e-9);
+  ASSERT_FALSE(plan.steps.empty());
+  EXPECT_NEAR(reference.duration(), plan.duration + plan.steps.back().transition.parameters.t_ds, reference.period);
+  // The plant starts where the reference does.
+  const auto& x = walk.plant->GetOutputPort("state").Eval<Eigen::VectorXd>(
+      walk.diagram->GetSubsystemContext(*walk.plant, root));
+  EXPECT_TRUE(x.head(walk.plant->model().nq()).isApprox(reference.q.front(), 1e-12));
+  // The plant's reference input at t = 0 is that sample too.
+  const auto& y = walk.player->get_reference_output_port().Eval<Eigen::VectorXd>(
+      walk.diagram->GetSubsystemContext(*walk.player, root));
+  EXPECT_TRUE(y.head(walk.plant->model().nq()).isApprox(reference.q.front(), 1e-12));
+}
+
+TEST(WalkDiagramTest, RunWalkRecordsAConsistentRun) {
+  WalkRunOptions options;
+  options.settle_time = 0.2;
+  const WalkRecord record = RunWalk(BuildWalkDiagram(ShortWalk()), options);
+  ASSERT_TRUE(record.start.ready) << record.start.reason;
+  ASSERT_FALSE(record.samples.empty());
+  EXPECT_EQ(record.samples.front().time, 0.0);
+  EXPECT_TRUE(record.samples.front().q.isApprox(record.reference.q.front(), 1e-12));
+  EXPECT_LE(record.duration, record.reference.duration() + options.settle_time + 1e-9);
+  EXPECT_NEAR(record.samples.back().time, record.duration, 1e-9);
+  EXPECT_EQ(record.fell, !record.fall_reason.empty());
+  if (!record.fell) EXPECT_NEAR(record.duration, record.reference.duration() + options.settle_time, 1e-9);
+  double previous = 0.0;
+  for (const WalkSample& s : record.samples) {
+    EXPECT_TRUE(std::isfinite(s.com_energy) && s.com_energy >= previous - 1e-12) << s.time;
+    previous = s.com_energy;
+    EXPECT_GE(s.electrical_energy, 0.0);
+  }
+}
+
+TEST(WalkDiagramTest, RefusesAnIncompleteSetupAnEmptyDiagramAndAForeignSimulator) {
+  WalkSetup setup;
+  CAIRN_EXPECT_THROWS_WITH(BuildWalkDiagram(setup), std::invalid_argument, "the step cost model is null");
+  CAIRN_EXPECT_THROWS_WITH(RunWalk(WalkDiagram(), WalkRunOptions{0.0, 1.0}), std::invalid_argument,
+                           "log_period 0 s must be in (0, 1]");
+  CAIRN_EXPECT_THROWS_WITH(RunWalk(WalkDiagram()), std::invalid_argument, "the walk diagram is empty",
+                           "BuildWalkDiagram()");
+  const WalkDiagram walk = BuildWalkDiagram(ShortWalk());
+  const WalkDiagram other = BuildWalkDiagram(ShortWalk());
+  systems::Simulator foreign(*other.diagram);
+  CAIRN_EXPECT_THROWS_WITH(InitializeWalk(walk, &foreign), std::invalid_argument,
+                           "the simulator does not simulate this walk diagram");
+}
+
+}  // namespace
+}  // namespace cairn::planning
