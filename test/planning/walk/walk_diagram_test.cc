@@ -91,7 +91,9 @@ TEST(WalkDiagramTest, RunWalkRecordsAConsistentRun) {
   EXPECT_LE(record.duration, record.reference.duration() + options.settle_time + 1e-9);
   EXPECT_NEAR(record.samples.back().time, record.duration, 1e-9);
   EXPECT_EQ(record.fell, !record.fall_reason.empty());
-  if (!record.fell) EXPECT_NEAR(record.duration, record.reference.duration() + options.settle_time, 1e-9);
+  if (!record.fell) {
+    EXPECT_NEAR(record.duration, record.reference.duration() + options.settle_time, 1e-9);
+  }
   double previous = 0.0;
   for (const WalkSample& s : record.samples) {
     EXPECT_TRUE(std::isfinite(s.com_energy) && s.com_energy >= previous - 1e-12) << s.time;
