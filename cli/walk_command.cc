@@ -51,6 +51,7 @@ struct WalkArguments {
   std::string oracle_cache;
   double settle_time = 1.0;
   double step = 1e-3;
+  bool open_loop = false;
   bool json = false;
 };
 
@@ -129,12 +130,12 @@ void MaybeNumber(JsonWriter& json, const char* key, double value, JsonWriter::Nu
 }
 
 std::string WalkJson(const FootstepScenario& scenario, const std::string& objective, const std::string& stabilizer,
-                     const multibody::Model& robot, const std::vector<std::string>& soles,
+                     bool feedback, const multibody::Model& robot, const std::vector<std::string>& soles,
                      const WalkRecord& record, const std::vector<WalkStepComparison>& steps) {
   const JsonWriter::NumberFormat f6 = JsonWriter::Fixed(6), f3 = JsonWriter::Fixed(3);
   JsonWriter json;
   json.BeginObject().Key("scenario").String(scenario.name()).Key("objective").String(objective);
-  json.Key("stabilizer").String(stabilizer).Key("walked").Bool(record.start.ready);
+  json.Key("stabilizer").String(stabilizer).Key("feedback").Bool(feedback).Key("walked").Bool(record.start.ready);
   json.Key("reason").String(record.start.reason);
   json.Key("plan").BeginObject().Key("found").Bool(record.plan.found).Key("steps").Integer(record.plan.steps.size());
   json.Key("duration").Number(record.plan.duration, f6).Key("energy_J").Number(record.plan.energy, f6);
@@ -216,6 +217,7 @@ int Run(const WalkArguments& args) {
 
   WalkSetup setup = WalkSetupFromScenario(scenario, oracle, walking_model, objective, robot, controller);
   setup.stabilizer.method = args.stabilizer;
+  setup.feedback = !args.open_loop;
   setup.plant.bullet.time_step = args.step;
   setup.plant.drives = multibody::LoadJointDrives(*robot, walking);
   setup.plant.stop_on_fall = true;
@@ -226,7 +228,8 @@ int Run(const WalkArguments& args) {
   const WalkRecord record = RunWalk(walk, run);
   const std::vector<WalkStepComparison> steps = CompareSteps(record);
   const std::string json =
-      WalkJson(scenario, objective_name, args.stabilizer, *robot, setup.plant.sole_bodies, record, steps);
+      WalkJson(scenario, objective_name, args.stabilizer, setup.feedback, *robot, setup.plant.sole_bodies, record,
+               steps);
 
   if (out) {
     out->WriteFile("walk.json", json + "\n");
@@ -266,8 +269,8 @@ int Run(const WalkArguments& args) {
     std::printf("%s, \"seconds\": %s}\n", line.c_str(), timing.text().c_str());
     return 0;
   }
-  std::printf("walk       %s (objective %s, stabiliser %s)\n", scenario.name().c_str(), objective_name.c_str(),
-              args.stabilizer.c_str());
+  std::printf("walk       %s (objective %s, stabiliser %s%s)\n", scenario.name().c_str(), objective_name.c_str(),
+              args.stabilizer.c_str(), args.open_loop ? ", open loop" : "");
   std::printf("plan       %s: %zu steps, %.3f s, %.1f J predicted\n", record.plan.found ? "found" : "NOT FOUND",
               record.plan.steps.size(), record.plan.duration, record.plan.energy);
   if (!record.start.ready) {
@@ -314,6 +317,8 @@ void RegisterWalkCommand(CommandRegistry* registry) {
                                  "(replaced as a whole)");
                   app.add_option("--oracle-cache", args->oracle_cache,
                                  "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
+                  app.add_flag("--open-loop", args->open_loop,
+                               "Play the stabilised reference without the capture-point feedback (BalanceFeedback)");
                   app.add_flag("--json", args->json, "Print walk.json and the stages' wall times as one JSON object");
                   return [args] { return Run(*args); };
                 });

@@ -96,7 +96,16 @@ WalkDiagram BuildWalkDiagram(const WalkSetup& setup) {
   builder.Connect(environment->GetOutputPort("y0"), trajectory->get_environment_input_port());
   builder.Connect(trajectory->get_trajectory_output_port(), stabilizer->get_trajectory_input_port());
   builder.Connect(stabilizer->get_reference_output_port(), player->get_reference_input_port());
-  builder.Connect(player->get_reference_output_port(), plant->GetInputPort("reference"));
+  if (setup.feedback) {
+    auto* balance = builder.AddNamedSystem<BalanceFeedback>("balance", setup.robot, setup.balance);
+    builder.Connect(player->get_reference_output_port(), balance->get_reference_input_port());
+    builder.Connect(plant->GetOutputPort("state"), balance->get_state_input_port());
+    builder.Connect(plant->GetOutputPort("contacts"), balance->get_contacts_input_port());
+    builder.Connect(balance->get_reference_output_port(), plant->GetInputPort("reference"));
+    walk.balance = balance;
+  } else {
+    builder.Connect(player->get_reference_output_port(), plant->GetInputPort("reference"));
+  }
   walk.diagram = builder.Build();
   walk.diagram->set_name("walk");
   walk.footsteps = footsteps;

@@ -23,6 +23,7 @@
 #include <cairn/planning/trajectory/collision_penalty.h>
 #include <cairn/planning/trajectory/trajectory_optimizer.h>
 #include <cairn/planning/trajectory/trajectory_optimizer_options.h>
+#include <cairn/planning/walk/balance_feedback.h>
 #include <cairn/systems/analysis/simulator.h>
 #include <cairn/systems/framework/diagram.h>
 
@@ -43,6 +44,10 @@ struct WalkSetup {
   std::vector<EnvironmentBox> environment;               ///< obstacles for the collision penalty
   TrajectoryOptimizerOptions trajectory;
   StabilizerOptions stabilizer;
+  /// Close the loop on the measured capture point (BalanceFeedback between the player and the plant); false plays
+  /// the stabilised reference open loop.
+  bool feedback{true};
+  BalanceFeedbackOptions balance;
   // The physics plant.
   std::shared_ptr<const multibody::Model> robot;         ///< floating base; required
   std::shared_ptr<const multibody::JointPdController> controller;  ///< PD gains; required
@@ -62,17 +67,18 @@ WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_pt
 
 /// The walk as one diagram (thesis Fig. 5.1 from the footstep planner on), with its blocks:
 ///
-///     start, goal, terrain ─► FootstepPlanner ─► TrajectoryOptimizer ─► Stabilizer ─► StabilizedReferencePlayer ─► HumanoidPlant
-///                                environment ─┘
+///     start, goal, terrain ─► FootstepPlanner ─► TrajectoryOptimizer ─► Stabilizer ─► StabilizedReferencePlayer
+///                                environment ─┘        ─► BalanceFeedback ─► HumanoidPlant (its state and contacts back)
 ///
 /// Subsystem names: "start", "goal", "terrain", "environment" (constant sources), "footsteps", "trajectory",
-/// "stabilizer", "player", "plant".
+/// "stabilizer", "player", "balance" (only with setup.feedback), "plant".
 struct WalkDiagram {
   std::unique_ptr<systems::Diagram> diagram;
   const FootstepPlanner* footsteps{nullptr};
   const TrajectoryOptimizer* trajectory{nullptr};
   const Stabilizer* stabilizer{nullptr};
   const StabilizedReferencePlayer* player{nullptr};
+  const BalanceFeedback* balance{nullptr};  ///< null without setup.feedback
   const multibody::HumanoidPlant* plant{nullptr};
 };
 

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "run_cairn_streams.h"
+#include "test_paths.h"
 
 namespace {
 

@@ -11,6 +11,7 @@
 #include "run_cairn.h"
 
 #include "cairn/version.h"
+#include "test_paths.h"
 
 namespace {
 
@@ -24,7 +25,7 @@ TEST(CairnCommandTest, VersionAndHelp) {
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_THAT(version.output, HasSubstr("cairn " CAIRN_VERSION_STRING));
   // A cairn run from the build tree takes its data from the source tree (the install test checks the prefix's).
-  EXPECT_THAT(version.output, HasSubstr("data " CAIRN_SOURCE_DIR "/data"));
+  EXPECT_THAT(version.output, HasSubstr(std::string("data ") + CAIRN_SOURCE_DIR + "/data"));
   const CairnRun help = RunCairn("--help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_THAT(help.output, HasSubstr("pendulum"));

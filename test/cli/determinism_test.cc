@@ -27,6 +27,7 @@
 #include "cairn/perception/synthetic/synthetic_stereo_renderer.h"
 #include "cairn/perception/stereo/winner_take_all.h"
 #include "run_cairn.h"
+#include "test_paths.h"
 
 namespace {
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "run_cairn.h"
+#include "test_paths.h"
 
 namespace {
 

@@ -12,6 +12,7 @@
 
 #include "../planning/support/shared_oracle.h"
 #include "run_cairn.h"
+#include "test_paths.h"
 
 namespace {
 

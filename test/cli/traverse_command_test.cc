@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "run_cairn.h"
+#include "test_paths.h"
 
 namespace {
 

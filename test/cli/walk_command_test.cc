@@ -16,6 +16,7 @@
 
 #include "../planning/support/shared_oracle.h"
 #include "run_cairn_streams.h"
+#include "test_paths.h"
 
 namespace {
 
@@ -121,10 +122,10 @@ TEST_F(WalkCommandTest, WritesConsistentOutputsAndTheSameBytesTwice) {
   for (const char* name : kFiles) EXPECT_EQ(Slurp(a / name), Slurp(b / name)) << name;
 }
 
-// The plant's verdict on the same plan: unstabilised it falls in its first steps; stabilised it stays up much
-// longer (measured 2026-12-02: none falls at 1.9 s, fft at 3.5 s of the 4.2 s plan; docs/walk.md).
+// The plant's verdict on the same plan played open loop: unstabilised it falls in its first steps; stabilised it
+// stays up much longer (measured 2026-12-02: none falls at 1.9 s, fft at 3.5 s of the 4.2 s plan; docs/walk.md).
 TEST_F(WalkCommandTest, TheUnstabilisedWalkFallsFirst) {
-  const CairnStreams none = RunCairnStreams(Walk("--stabilizer none --json"));
+  const CairnStreams none = RunCairnStreams(Walk("--stabilizer none --open-loop --json"));
   ASSERT_EQ(none.exit_code, 0) << none.err;
   const nlohmann::json unstabilised = nlohmann::json::parse(none.out);
   EXPECT_EQ(unstabilised.at("stabilization").at("method"), "none");
@@ -133,7 +134,7 @@ TEST_F(WalkCommandTest, TheUnstabilisedWalkFallsFirst) {
   }
   ASSERT_TRUE(unstabilised.at("walked").get<bool>()) << unstabilised.at("reason");
   EXPECT_TRUE(unstabilised.at("fell").get<bool>());
-  const CairnStreams fft = RunCairnStreams(Walk("--stabilizer fft --json"));
+  const CairnStreams fft = RunCairnStreams(Walk("--stabilizer fft --open-loop --json"));
   ASSERT_EQ(fft.exit_code, 0) << fft.err;
   const nlohmann::json stabilised = nlohmann::json::parse(fft.out);
   EXPECT_GT(stabilised.at("executed_duration").get<double>(),

@@ -42,6 +42,7 @@ extern "C" const char* __asan_default_options() { return "max_allocation_size_mb
 #include <gtest/gtest.h>
 
 #include "fuzz_harnesses.h"
+#include "test_paths.h"
 
 namespace cairn::fuzz {
 namespace {

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdio>
 #include <string>
+#include "test_paths.h"
 
 namespace cairn::test {
 

@@ -1,5 +1,6 @@
 // cairn.planning (walk part): the walk diagram of `cairn walk` -- WalkSetup, BuildWalkDiagram, RunWalk and its
-// record, ScenarioTerrainBoxes and the StabilizedReferencePlayer system; and cairn.visualization's MotionHtml.
+// record, ScenarioTerrainBoxes, the StabilizedReferencePlayer and BalanceFeedback systems; and cairn.visualization's
+// MotionHtml.
 
 #include <memory>
 #include <string>
@@ -14,6 +15,7 @@
 #include "system_support.h"
 #include "cairn/multibody/model.h"
 #include "cairn/planning/stabilization/stabilized_reference_player.h"
+#include "cairn/planning/walk/balance_feedback.h"
 #include "cairn/planning/walk/scenario_terrain_boxes.h"
 #include "cairn/planning/walk/walk_diagram.h"
 #include "cairn/planning/walk/walk_run.h"
@@ -39,6 +41,38 @@ void DefinePlanningWalk(py::module_ m) {
       .def("Sample", &StabilizedReferencePlayer::Sample, py::arg("reference"), py::arg("t"),
            "[q; v] of the reference at time t, as the output computes it.");
 
+  py::class_<BalanceFeedbackOptions>(m, "BalanceFeedbackOptions", "Gains and limits of BalanceFeedback.")
+      .def(py::init<>(), "0.8 rad/m forward, 1 rad/m sideways, at most 0.2 / 0.15 rad, COM height 0.8 m.")
+      .def_readwrite("pitch_gain", &BalanceFeedbackOptions::pitch_gain,
+                     "Leg tilt about y per m of forward capture-point error, rad/m, in [0, 1000].")
+      .def_readwrite("roll_gain", &BalanceFeedbackOptions::roll_gain,
+                     "Leg tilt about x per m of sideways capture-point error, rad/m, in [0, 1000].")
+      .def_readwrite("max_pitch", &BalanceFeedbackOptions::max_pitch, "Largest pitch offset, rad, in [0, 0.5].")
+      .def_readwrite("max_roll", &BalanceFeedbackOptions::max_roll, "Largest roll offset, rad, in [0, 0.5].")
+      .def_readwrite("com_height", &BalanceFeedbackOptions::com_height,
+                     "Pendulum height of the capture point, m, in (0.1, 3].")
+      .def_readwrite("left_ankle_pitch", &BalanceFeedbackOptions::left_ankle_pitch, "Joint name.")
+      .def_readwrite("left_ankle_roll", &BalanceFeedbackOptions::left_ankle_roll, "Joint name.")
+      .def_readwrite("right_ankle_pitch", &BalanceFeedbackOptions::right_ankle_pitch, "Joint name.")
+      .def_readwrite("right_ankle_roll", &BalanceFeedbackOptions::right_ankle_roll, "Joint name.");
+  py::class_<BalanceFeedback, systems::LeafSystem>(
+      m, "BalanceFeedback",
+      "System: inputs `reference` and `state` ([q; v]) and `contacts` (the soles); output `reference` with the "
+      "loaded legs tilted about their ankles against the capture-point error.")
+      .def(py::init([](const multibody::Model& model, const BalanceFeedbackOptions& options) {
+             return std::make_unique<BalanceFeedback>(std::make_shared<const multibody::Model>(model), options);
+           }),
+           py::arg("model"), py::arg("options") = BalanceFeedbackOptions(),
+           "Keeps a copy of the model (floating base and the named ankle joints required).")
+      .def("get_reference_input_port", PortGetter(&BalanceFeedback::get_reference_input_port), "Input `reference`.")
+      .def("get_state_input_port", PortGetter(&BalanceFeedback::get_state_input_port), "Input `state`.")
+      .def("get_contacts_input_port", PortGetter(&BalanceFeedback::get_contacts_input_port), "Input `contacts`.")
+      .def("get_reference_output_port", PortGetter(&BalanceFeedback::get_reference_output_port),
+           "Output `reference`.")
+      .def("options", &BalanceFeedback::options, py::return_value_policy::copy, "The BalanceFeedbackOptions.")
+      .def("Correct", &BalanceFeedback::Correct, py::arg("reference"), py::arg("state"), py::arg("left_loaded"),
+           py::arg("right_loaded"), "The corrected reference as the output computes it.");
+
   m.def("ScenarioTerrainBoxes", &ScenarioTerrainBoxes, py::arg("scenario"),
         "A footstep scenario's regions and obstacles as the plant's non-overlapping TerrainBoxes (true friction).");
 
@@ -51,6 +85,9 @@ void DefinePlanningWalk(py::module_ m) {
       .def_readwrite("environment", &WalkSetup::environment, "EnvironmentBoxes of the collision penalty.")
       .def_readwrite("trajectory", &WalkSetup::trajectory, "TrajectoryOptimizerOptions.")
       .def_readwrite("stabilizer", &WalkSetup::stabilizer, "StabilizerOptions (WalkingStabilizerOptions).")
+      .def_readwrite("feedback", &WalkSetup::feedback,
+                     "Close the loop on the capture point (BalanceFeedback); False plays the reference open loop.")
+      .def_readwrite("balance", &WalkSetup::balance, "BalanceFeedbackOptions.")
       .def_readwrite("plant_terrain", &WalkSetup::plant_terrain, "The plant's TerrainBoxes (the true world).")
       .def_readwrite("plant", &WalkSetup::plant, "HumanoidPlantOptions.");
   m.def(
@@ -82,10 +119,14 @@ void DefinePlanningWalk(py::module_ m) {
           "player", [](const WalkDiagram& w) { return w.player; }, py::return_value_policy::reference_internal,
           "The StabilizedReferencePlayer.")
       .def_property_readonly(
+          "balance", [](const WalkDiagram& w) { return w.balance; }, py::return_value_policy::reference_internal,
+          "The BalanceFeedback (None when the setup plays the reference open loop).")
+      .def_property_readonly(
           "plant", [](const WalkDiagram& w) { return w.plant; }, py::return_value_policy::reference_internal,
           "The HumanoidPlant.");
   m.def("BuildWalkDiagram", &BuildWalkDiagram, py::arg("setup"),
-        "FootstepPlanner -> TrajectoryOptimizer -> Stabilizer -> StabilizedReferencePlayer -> HumanoidPlant.");
+        "FootstepPlanner -> TrajectoryOptimizer -> Stabilizer -> StabilizedReferencePlayer -> BalanceFeedback -> "
+        "HumanoidPlant.");
 
   py::class_<WalkSettleTimes>(m, "WalkSettleTimes", "Wall time of each planning stage, s.")
       .def_readonly("footsteps", &WalkSettleTimes::footsteps, "The footstep search.")

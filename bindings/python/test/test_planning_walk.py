@@ -89,6 +89,53 @@ def test_the_player_interpolates_between_samples_and_holds_the_last(robot, scena
         player.Sample(planning.StabilizedTrajectory(), 0.0)
 
 
+def standing(robot):
+    x = np.zeros(robot.nq() + robot.nv())
+    x[:robot.nq()] = mb.NeutralConfiguration(robot)
+    x[2] = 0.8
+    return x
+
+
+def test_balance_feedback_tilts_only_the_loaded_ankles_against_the_capture_point(robot):
+    feedback = planning.BalanceFeedback(robot)
+    assert feedback.options().pitch_gain == pytest.approx(0.8)
+    planned = standing(robot)
+    assert np.array_equal(feedback.Correct(planned, planned, True, True), planned)
+    measured = planned.copy()
+    measured[0] += 0.05  # the COM 5 cm ahead of the plan
+    corrected = feedback.Correct(planned, measured, True, False)
+    changed = np.flatnonzero(corrected != planned)
+    left_pitch = robot.joint(robot.GetJointIndex("l_ankle_pitch")).idx_q
+    assert list(changed) == [left_pitch]  # the right leg swings: untouched
+    assert abs(corrected[left_pitch] - planned[left_pitch]) == pytest.approx(0.8 * 0.05)
+    # In the air nothing changes.
+    assert np.array_equal(feedback.Correct(planned, measured, False, False), planned)
+
+
+def test_balance_feedback_refuses_bad_options_and_sizes(robot):
+    options = planning.BalanceFeedbackOptions()
+    options.max_pitch = 0.7
+    with pytest.raises(ValueError, match="max_pitch 0.7 must be in"):
+        planning.BalanceFeedback(robot, options)
+    options = planning.BalanceFeedbackOptions()
+    options.right_ankle_pitch = "r_ankle"
+    with pytest.raises(ValueError, match="no joint 'r_ankle'"):
+        planning.BalanceFeedback(robot, options)
+    with pytest.raises(ValueError, match="nq \\+ nv"):
+        planning.BalanceFeedback(robot).Correct(np.zeros(3), np.zeros(3), True, True)
+
+
+def test_the_walk_diagram_closes_the_loop_unless_told_to_play_open_loop(scenario, oracle, walking_model, robot):
+    setup = setup_for(scenario, oracle, walking_model, robot)
+    assert setup.feedback
+    walk = planning.BuildWalkDiagram(setup)
+    assert walk.balance is not None and walk.balance.get_name() == "balance"
+    setup.feedback = False
+    open_loop = planning.BuildWalkDiagram(setup)
+    assert open_loop.balance is None
+    assert "balance" not in [s.get_name() for s in open_loop.diagram.GetSystems()]
+
+
 def test_the_viewer_page_inlines_three_js_and_refuses_a_bad_scene(robot, tmp_path):
     if not os.path.exists(viz.DefaultThreeJsPath()):
         pytest.skip("libjs-three is not installed")

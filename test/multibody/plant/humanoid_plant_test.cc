@@ -19,6 +19,7 @@
 
 #include "expect_throws.h"
 #include "test_models.h"
+#include "test_paths.h"
 
 namespace cairn::multibody {
 namespace {

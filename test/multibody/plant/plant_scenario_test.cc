@@ -9,6 +9,7 @@
 #include <cairn/multibody/plant/plant_scenario.h>
 
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::multibody {
 namespace {

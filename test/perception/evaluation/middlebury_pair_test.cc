@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::perception {
 namespace {

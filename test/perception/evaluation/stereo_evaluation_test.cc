@@ -11,6 +11,7 @@
 #include "cairn/perception/stereo/compute_cost_volume.h"
 #include "cairn/perception/stereo/cost_samples.h"
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::perception {
 namespace {

@@ -11,6 +11,7 @@
 #include "cairn/perception/synthetic/material_scene.h"
 #include "cairn/perception/synthetic/material_texture.h"
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::perception {
 namespace {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::perception {
 namespace {

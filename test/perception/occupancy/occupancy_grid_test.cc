@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::perception {
 namespace {

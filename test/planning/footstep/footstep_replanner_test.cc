@@ -12,6 +12,7 @@
 
 #include "../support/shared_oracle.h"
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {

@@ -18,6 +18,7 @@
 #include <cairn/planning/scenarios/footstep_scenario.h>
 
 #include "../support/shared_oracle.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {

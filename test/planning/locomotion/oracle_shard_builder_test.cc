@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {

@@ -12,6 +12,7 @@
 #include <cairn/planning/footstep/time_limit_reached.h>
 
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {

@@ -16,11 +16,12 @@
 #include "cairn/multibody/urdf_parser.h"
 #include "cairn/perception/terrain/collapsibility_estimator.h"
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {
 
-const char* const kArm = CAIRN_SOURCE_DIR "/data/robots/cairn_probe_arm.urdf";
+const std::string kArm = std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_probe_arm.urdf";
 
 double Mean(const std::vector<double>& x) { return std::accumulate(x.begin(), x.end(), 0.0) / x.size(); }
 
@@ -109,7 +110,7 @@ TEST(ProbeArmPlantTest, BadOptionsAndModelsAreRefused) {
   o = {};
   o.hold_time = 1e4;
   CAIRN_EXPECT_THROWS_WITH(ProbeArmPlant::Load(kArm, o), std::invalid_argument, "more than the limit");
-  const multibody::Model humanoid = multibody::ParseUrdfFile(CAIRN_SOURCE_DIR "/data/robots/cairn_antenna.urdf");
+  const multibody::Model humanoid = multibody::ParseUrdfFile(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_antenna.urdf");
   CAIRN_EXPECT_THROWS_WITH(ProbeArmPlant(humanoid, {}), std::invalid_argument, "needs the joints yaw, pitch, push");
 }
 

@@ -3,12 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {
 
 TEST(TraverseScenarioTest, ReadsTheShippedScenario) {
-  const auto s = TraverseScenario::Load(CAIRN_SOURCE_DIR "/examples/scenarios/traverse/plants_and_water.yaml");
+  const auto s = TraverseScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/traverse/plants_and_water.yaml");
   ASSERT_EQ(s.regions.size(), 5u);
   EXPECT_EQ(s.regions[0].name, "soft plants");
   EXPECT_EQ(s.ClassAt(Eigen::Vector2d(3.5, 5.0)), 0);

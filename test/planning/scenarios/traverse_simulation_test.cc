@@ -6,12 +6,13 @@
 
 #include "cairn/perception/terrain/traversability_class.h"
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {
 
-const char* const kScenario = CAIRN_SOURCE_DIR "/examples/scenarios/traverse/plants_and_water.yaml";
-const char* const kArm = CAIRN_SOURCE_DIR "/data/robots/cairn_probe_arm.urdf";
+const std::string kScenario = std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/traverse/plants_and_water.yaml";
+const std::string kArm = std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_probe_arm.urdf";
 
 TraverseSimulation::Options WithArm() {
   TraverseSimulation::Options options;

@@ -17,6 +17,7 @@
 #include <cairn/planning/locomotion/transition_oracle.h>
 #include <cairn/planning/locomotion/walking_model.h>
 #include <cairn/planning/locomotion/walking_objective.h>
+#include "test_paths.h"
 
 namespace cairn::planning::test {
 

@@ -7,6 +7,7 @@
 #include <cairn/multibody/model.h>
 #include <cairn/multibody/urdf_parser.h>
 #include <cairn/planning/footstep/footstep_plan.h>
+#include "test_paths.h"
 
 namespace cairn::planning::test {
 

@@ -17,6 +17,7 @@
 
 #include "../support/shared_oracle.h"
 #include "test_robot.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {

@@ -8,6 +8,7 @@
 #include <cairn/planning/walk/scenario_terrain_boxes.h>
 
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {

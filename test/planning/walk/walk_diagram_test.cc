@@ -4,22 +4,37 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include <cairn/multibody/kinematics.h>
 #include <cairn/multibody/urdf_parser.h>
 #include <cairn/planning/walk/walk_diagram.h>
 #include <cairn/planning/walk/walk_run.h>
 
 #include "../support/shared_oracle.h"
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::planning {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The walk of a scenario with the project's humanoid, its PD gains and the shared test oracle (the default one).
+WalkSetup SetupFor(const FootstepScenario& scenario) {
+  multibody::UrdfOptions urdf;
+  urdf.floating_base = true;
+  const auto robot = std::make_shared<const multibody::Model>(
+      multibody::ParseUrdfFile(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid.urdf", urdf));
+  const auto controller = std::make_shared<const multibody::JointPdController>(multibody::JointPdController::Load(
+      *robot, std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_control.yaml"));
+  return WalkSetupFromScenario(scenario, test::SharedOracle(WalkingObjective::kComWorkPlusHeat),
+                               test::SharedWalkingModel(), WalkingObjective::kComWorkPlusHeat, robot, controller);
+}
 
 // Flat ground, the goal 0.3 m ahead: a plan of a few steps under an expansion budget.
 WalkSetup ShortWalk() {
@@ -36,15 +51,7 @@ planner: {time_limit: 600, max_expansions: 5000}
 )";
   const FootstepScenario scenario = FootstepScenario::Load(path.string());
   fs::remove(path);
-  multibody::UrdfOptions urdf;
-  urdf.floating_base = true;
-  const auto robot = std::make_shared<const multibody::Model>(
-      multibody::ParseUrdfFile(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid.urdf", urdf));
-  const auto controller = std::make_shared<const multibody::JointPdController>(multibody::JointPdController::Load(
-      *robot, std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_control.yaml"));
-  WalkSetup setup = WalkSetupFromScenario(scenario, test::SharedOracle(WalkingObjective::kComWorkPlusHeat),
-                                          test::SharedWalkingModel(), WalkingObjective::kComWorkPlusHeat, robot,
-                                          controller);
+  WalkSetup setup = SetupFor(scenario);
   setup.stabilizer.method = "preview";
   setup.stabilizer.control_period = 0.01;
   return setup;
@@ -99,6 +106,44 @@ TEST(WalkDiagramTest, RunWalkRecordsAConsistentRun) {
     EXPECT_TRUE(std::isfinite(s.com_energy) && s.com_energy >= previous - 1e-12) << s.time;
     previous = s.com_energy;
     EXPECT_GE(s.electrical_energy, 0.0);
+  }
+}
+
+// Where each sole ended against a stance, m: the larger of the two horizontal distances.
+double SoleDistance(const WalkSetup& setup, const WalkRecord& record, const Stance& stance) {
+  multibody::Data data(*setup.robot);
+  multibody::ForwardKinematics(*setup.robot, data, record.samples.back().q);
+  const auto distance = [&](const std::string& sole, const FootPose& foot) {
+    return (data.X_world[setup.robot->GetBodyIndex(sole)].translation().head<2>() - Eigen::Vector2d(foot.x, foot.y))
+        .norm();
+  };
+  return std::max(distance(setup.plant.sole_bodies.at(0), stance.left),
+                  distance(setup.plant.sole_bodies.at(1), stance.right));
+}
+
+// The plant's verdict on the flat 3 m plan (examples/scenarios/flat.yaml, 15 steps of about 1.2 s): played open loop
+// the stabilised reference falls in the second step; with the capture-point feedback the robot stays up several
+// seconds longer. (Measured 2026-12-04: open loop falls at 3.3 s, closed loop at 10.4 s of 18.2 s, the pelvis
+// tilting; issue 16 asks for the whole walk to within 5 cm of the goal, which is not reached yet: docs/walk.md.)
+TEST(WalkDiagramTest, TheFeedbackKeepsTheFlatPlanUpLongerThanOpenLoop) {
+  const FootstepScenario scenario =
+      FootstepScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/flat.yaml");
+  WalkSetup setup = SetupFor(scenario);
+  setup.planner.search.time_limit = 600.0;  // the scenario's 10 s wall-clock limit, as a budget of expansions
+  setup.planner.search.max_expansions = 20000;
+  WalkRunOptions options;
+  options.settle_time = 0.5;
+  const WalkRecord closed_loop = RunWalk(BuildWalkDiagram(setup), options);
+  ASSERT_TRUE(closed_loop.start.ready) << closed_loop.start.reason;
+  ASSERT_GE(closed_loop.plan.steps.size(), 10u);
+  setup.feedback = false;
+  const WalkRecord open_loop = RunWalk(BuildWalkDiagram(setup), options);
+  EXPECT_TRUE(open_loop.fell) << "the flat plan was walked open loop";
+  EXPECT_GT(closed_loop.duration, open_loop.duration + 3.0)
+      << "closed loop " << closed_loop.fall_reason << " at " << closed_loop.duration << " s";
+  if (!closed_loop.fell) {
+    const Stance last = closed_loop.plan.StanceAfter(static_cast<int>(closed_loop.plan.steps.size()) - 1);
+    EXPECT_LT(SoleDistance(setup, closed_loop, last), 0.1);
   }
 }
 

@@ -8,6 +8,7 @@
 #include "cairn/multibody/kinematics.h"
 #include "cairn/multibody/urdf_parser.h"
 #include "expect_throws.h"
+#include "test_paths.h"
 
 namespace cairn::perception {
 namespace {

@@ -1,0 +1,134 @@
+#include <cairn/planning/walk/balance_feedback.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include <cairn/common/number_text.h>
+#include <cairn/multibody/center_of_mass.h>
+#include <cairn/multibody/data.h>
+#include <cairn/multibody/plant/sole_state.h>
+
+namespace cairn::planning {
+namespace {
+
+// Two Data, so the reference's and the plant's kinematics do not overwrite each other; per context, so the
+// output calculation allocates nothing and contexts in different threads share nothing.
+struct Scratch {
+  multibody::Data measured;
+  multibody::Data reference;
+};
+
+void CheckRange(const char* name, double value, double low, double high, bool open_low = false) {
+  const bool ok = std::isfinite(value) && (open_low ? value > low : value >= low) && value <= high;
+  if (!ok) {
+    throw std::invalid_argument(std::string("BalanceFeedback: ") + name + " " + FormatShort(value) + " must be in " +
+                                (open_low ? "(" : "[") + FormatShort(low) + ", " + FormatShort(high) + "]");
+  }
+}
+
+}  // namespace
+
+BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, const BalanceFeedbackOptions& options)
+    : model_(std::move(model)), options_(options) {
+  if (model_ == nullptr) throw std::invalid_argument("BalanceFeedback: the robot model is null");
+  if (model_->num_bodies() < 2 || model_->joint(1).type != multibody::JointType::kFloating) {
+    throw std::invalid_argument("BalanceFeedback: model '" + model_->name() +
+                                "' has no floating base; load the URDF with a floating base");
+  }
+  CheckRange("pitch_gain", options_.pitch_gain, 0.0, 1e3);
+  CheckRange("roll_gain", options_.roll_gain, 0.0, 1e3);
+  CheckRange("max_pitch", options_.max_pitch, 0.0, 0.5);
+  CheckRange("max_roll", options_.max_roll, 0.0, 0.5);
+  CheckRange("com_height", options_.com_height, 0.1, 3.0, true);
+  const auto ankle = [&](const std::string& name, int axis) {
+    if (!model_->HasJoint(name)) {
+      throw std::invalid_argument("BalanceFeedback: model '" + model_->name() + "' has no joint '" + name +
+                                  "'; name the ankle joints in BalanceFeedbackOptions");
+    }
+    const multibody::Joint& joint = model_->joint(model_->GetJointIndex(name));
+    if (joint.type != multibody::JointType::kRevolute || joint.axis_index != axis) {
+      throw std::invalid_argument("BalanceFeedback: joint '" + name + "' must be revolute about its " +
+                                  (axis == 0 ? "x" : "y") + " axis (the ankle's " + (axis == 0 ? "roll" : "pitch") +
+                                  ")");
+    }
+    return Ankle{joint.idx_q, static_cast<double>(joint.axis_sign)};
+  };
+  pitch_[0] = ankle(options_.left_ankle_pitch, 1);
+  pitch_[1] = ankle(options_.right_ankle_pitch, 1);
+  roll_[0] = ankle(options_.left_ankle_roll, 0);
+  roll_[1] = ankle(options_.right_ankle_roll, 0);
+
+  const int n = model_->nq() + model_->nv();
+  DeclareVectorInputPort("reference", n);
+  DeclareVectorInputPort("state", n);
+  DeclareAbstractInputPort("contacts", systems::Value<std::vector<multibody::SoleState>>(
+                                           std::vector<multibody::SoleState>(2)));
+  scratch_ = DeclarePerContextStorage(systems::Value<Scratch>(Scratch{multibody::Data(*model_), multibody::Data(*model_)}));
+  DeclareVectorOutputPort(
+      "reference", n,
+      [this](const systems::Context& context, Eigen::VectorXd* y) {
+        const auto& soles = get_contacts_input_port().Eval<std::vector<multibody::SoleState>>(context);
+        if (soles.size() != 2) {
+          throw std::invalid_argument("BalanceFeedback: the contacts input has " + FormatShort(soles.size()) +
+                                      " soles; connect the HumanoidPlant's `contacts` (left, right)");
+        }
+        Scratch& scratch = GetMutablePerContextStorage<Scratch>(context, scratch_);
+        const Eigen::VectorXd& reference = get_reference_input_port().Eval<Eigen::VectorXd>(context);
+        const Eigen::VectorXd& state = get_state_input_port().Eval<Eigen::VectorXd>(context);
+        *y = reference;
+        Apply(reference, state, soles[0].loaded, soles[1].loaded, &scratch.measured, &scratch.reference, y);
+      },
+      {input_port_ticket(0), input_port_ticket(1), input_port_ticket(2)});
+}
+
+Eigen::VectorXd BalanceFeedback::Correct(const Eigen::VectorXd& reference, const Eigen::VectorXd& state,
+                                         bool left_loaded, bool right_loaded) const {
+  const int n = model_->nq() + model_->nv();
+  if (reference.size() != n || state.size() != n) {
+    throw std::invalid_argument("BalanceFeedback: reference and state must have nq + nv = " + FormatShort(n) +
+                                " entries; got " + FormatShort(reference.size()) + " and " +
+                                FormatShort(state.size()));
+  }
+  multibody::Data measured(*model_), planned(*model_);
+  Eigen::VectorXd y = reference;
+  Apply(reference, state, left_loaded, right_loaded, &measured, &planned, &y);
+  return y;
+}
+
+void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, bool left_loaded,
+                            bool right_loaded, multibody::Data* measured, multibody::Data* planned,
+                            Eigen::VectorXd* y) const {
+  if (!left_loaded && !right_loaded) return;  // in the air: nothing to stand on
+  const int nq = model_->nq();
+  const double omega = std::sqrt(-model_->gravity().z() / options_.com_height);
+  const auto capture_point = [&](const Eigen::VectorXd& x, multibody::Data* data) {
+    const Eigen::VectorXd q = x.head(nq);
+    const Eigen::Vector3d c = multibody::CenterOfMass(*model_, *data, q);
+    const Eigen::Vector3d c_dot = multibody::CenterOfMassJacobian(*model_, *data, q) * x.tail(model_->nv());
+    return Eigen::Vector2d((c + c_dot / omega).head<2>());
+  };
+  const Eigen::Vector2d error = capture_point(state, measured) - capture_point(reference, planned);
+  const int b = model_->joint(1).idx_q + 3;  // the floating base's quaternion (w, x, y, z)
+  const Eigen::Quaterniond base(state[b], state[b + 1], state[b + 2], state[b + 3]);
+  const Eigen::Vector3d forward = base * Eigen::Vector3d::UnitX();
+  const double yaw = std::atan2(forward.y(), forward.x());
+  const double e_forward = std::cos(yaw) * error.x() + std::sin(yaw) * error.y();
+  const double e_left = -std::sin(yaw) * error.x() + std::cos(yaw) * error.y();
+  // A joint rotation theta about the ankle's axis (sign s along the tilt axis) tilts the leg over the flat foot by
+  // -s theta; tilting it by rho about y moves the COM forward by h rho, about x sideways by -h rho.
+  const double tilt_y = std::clamp(-options_.pitch_gain * e_forward, -options_.max_pitch, options_.max_pitch);
+  const double tilt_x = std::clamp(options_.roll_gain * e_left, -options_.max_roll, options_.max_roll);
+  const bool loaded[2] = {left_loaded, right_loaded};
+  for (int leg = 0; leg < 2; ++leg) {
+    if (!loaded[leg]) continue;
+    (*y)[pitch_[leg].q] -= tilt_y / pitch_[leg].sign;
+    (*y)[roll_[leg].q] -= tilt_x / roll_[leg].sign;
+  }
+}
+
+}  // namespace cairn::planning

@@ -1,0 +1,86 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <Eigen/Core>
+
+#include <cairn/multibody/data.h>
+#include <cairn/multibody/model.h>
+#include <cairn/systems/framework/leaf_system.h>
+
+namespace cairn::planning {
+
+/// Settings of BalanceFeedback.
+struct BalanceFeedbackOptions {
+  /// Forward and sideways gains, rad of leg tilt per m of capture-point error, in [0, 1000] (0 turns the axis off).
+  /// In the plant, pitch gains in [0.6, 1] with roll gains in [0.5, 2] walk a slow four-step plan that falls open loop
+  /// and with a pitch gain of 0.3 or less (docs/walk.md, "Balance feedback"); the defaults sit in the middle.
+  double pitch_gain{0.8};
+  double roll_gain{1.0};
+  /// Largest ankle offsets, rad, in [0, 0.5].
+  double max_pitch{0.2};
+  double max_roll{0.15};
+  /// COM height of the linear inverted pendulum whose capture point is fed back, m, in (0.1, 3]: omega = sqrt(g / h).
+  double com_height{0.8};
+  /// The ankle joints of the left and the right leg (revolute; pitch about the joints' +-y, roll about +-x).
+  std::string left_ankle_pitch{"l_ankle_pitch"};
+  std::string left_ankle_roll{"l_ankle_roll"};
+  std::string right_ankle_pitch{"r_ankle_pitch"};
+  std::string right_ankle_roll{"r_ankle_roll"};
+};
+
+/// Closes the walk's loop on the measured capture point. The stabilised reference is open loop: under PD tracking
+/// the plant drifts from it, and the drift grows like exp(omega t) through every single support (omega ~ 3.5 /s for
+/// an 0.8 m COM), so slow steps (0.9 s swings) fall where fast ones (0.6 s) do not. Every step this system compares
+/// the plant's capture point xi = c + c_dot / omega with the reference's and tilts each loaded leg about its ankle
+/// (an offset of the ankle pitch and roll references) so that the COM moves against the error, in the base's
+/// heading frame:
+///
+///     leg tilt about y = -pitch_gain * e_forward,   leg tilt about x = +roll_gain * e_left   (clamped)
+///
+/// With the stiff PD drive and the sole flat on the ground the offset mostly re-poses the leg (the COM moves
+/// h * tilt), with the ankle torque shifting the ZMP the same way. Swing legs are left alone (a tilted swing foot
+/// would stub its toe). The feedback is a cheap calculation on the current inputs, so it is an output.
+///
+/// | port | type | meaning |
+/// |---|---|---|
+/// | input `reference` | vector nq + nv | the planned [q; v] (StabilizedReferencePlayer's `reference`) |
+/// | input `state` | vector nq + nv | the plant's measured [q; v] (HumanoidPlant's `state`) |
+/// | input `contacts` | std::vector<multibody::SoleState> | the plant's left and right sole (HumanoidPlant's `contacts`): which carry load |
+/// | output `reference` | vector nq + nv | `reference` with the loaded legs' ankle offsets |
+class BalanceFeedback final : public systems::LeafSystem {
+ public:
+  /// Throws std::invalid_argument for a null model, one without a floating base, an ankle joint that is missing or
+  /// not revolute about its x (roll) or y (pitch) axis, and options out of range (naming the option and its range).
+  BalanceFeedback(std::shared_ptr<const multibody::Model> model, const BalanceFeedbackOptions& options = {});
+
+  const systems::InputPort& get_reference_input_port() const { return GetInputPort("reference"); }
+  const systems::InputPort& get_state_input_port() const { return GetInputPort("state"); }
+  const systems::InputPort& get_contacts_input_port() const { return GetInputPort("contacts"); }
+  const systems::OutputPort& get_reference_output_port() const { return GetOutputPort("reference"); }
+
+  const BalanceFeedbackOptions& options() const { return options_; }
+
+  /// The corrected reference as the output computes it, with `left_loaded` / `right_loaded` saying which legs
+  /// stand (for tests and offline use). Throws std::invalid_argument for vectors of the wrong size.
+  Eigen::VectorXd Correct(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, bool left_loaded,
+                          bool right_loaded) const;
+
+ private:
+  struct Ankle {
+    int q{0};         // index in q
+    double sign{1.0};  // the sign of the joint axis along its tilt axis
+  };
+
+  // Adds the offsets to *y (a copy of `reference`); `measured` and `planned` are kinematics scratch.
+  void Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, bool left_loaded, bool right_loaded,
+             multibody::Data* measured, multibody::Data* planned, Eigen::VectorXd* y) const;
+
+  std::shared_ptr<const multibody::Model> model_;
+  BalanceFeedbackOptions options_;
+  Ankle pitch_[2], roll_[2];
+  int scratch_{-1};
+};
+
+}  // namespace cairn::planning
