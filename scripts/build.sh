@@ -26,10 +26,10 @@ done
 # ccache keys on the compiler's command line, which names absolute paths: without a base folder a second clone of
 # the repository (CI's fresh clone) missed every object and compiled both builds cold (measured: 75 of CI's 90
 # minutes). Paths below the root are hashed relative to it, and the working folder is left out of the hash (the
-# debug info then names the first clone's folder, which is harmless). Both builds together take about 6 GB.
+# debug info then names the first clone's folder, which is harmless). Measured: a fresh clone's plain build hit
+# 92 % of ccache and built in 200 s instead of about 25 min; the plain build's objects take 0.6 GB of the cache.
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}"
 export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
-export CCACHE_MAXSIZE="${CCACHE_MAXSIZE:-20G}"
 
 generator=()
 if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
