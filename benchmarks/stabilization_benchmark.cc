@@ -3,9 +3,10 @@
 // once for eight straight 0.2 m steps on flat ground (t_ds 0.2 s, t_sw 0.6 s), sampled at 200 Hz. Counters: passes
 // kept and the RMS ZMP error before and after (mm), so a speed-up that changes the result shows.
 //
-// BM_PlantPlaysTheReference: wall time per simulated second of the walk diagram's last three blocks (Stabilizer ->
-// StabilizedReferencePlayer -> HumanoidPlant, 1 ms plant steps) on that trajectory with the walking options, the
-// cost that the Stabilizer's per-step check and its dense reference add to each plant step.
+// BM_PlantPlaysTheReference: wall time per simulated second of the walk diagram's last blocks (Stabilizer ->
+// StabilizedReferencePlayer [-> BalanceFeedback] -> HumanoidPlant, 1 ms plant steps) on that trajectory with the
+// walking options: the cost that the Stabilizer's per-step check, its dense reference and (`feedback`) the
+// capture-point feedback add to each plant step.
 
 #include <memory>
 #include <string>
@@ -20,6 +21,7 @@
 #include <cairn/planning/stabilization/stabilized_reference_player.h>
 #include <cairn/planning/stabilization/stabilizer.h>
 #include <cairn/planning/trajectory/optimize_whole_body_trajectory.h>
+#include <cairn/planning/walk/balance_feedback.h>
 #include <cairn/systems/analysis/simulator.h>
 #include <cairn/systems/framework/diagram_builder.h>
 #include <cairn/systems/primitives/constant_value_source.h>
@@ -86,7 +88,7 @@ void BM_Stabilize(benchmark::State& state, const std::string& method) {
   state.counters["rms_after_mm"] = 1000.0 * result.report.rms_error_after;
 }
 
-void BM_PlantPlaysTheReference(benchmark::State& state) {
+void BM_PlantPlaysTheReference(benchmark::State& state, bool feedback) {
   const WholeBodyTrajectory& trajectory = Trajectory();
   if (!trajectory.found) {
     state.SkipWithError(("the trajectory was not optimised: " + trajectory.report.message).c_str());
@@ -111,7 +113,15 @@ void BM_PlantPlaysTheReference(benchmark::State& state) {
       plant_options);
   builder.Connect(source->GetOutputPort("y0"), stabilizer->get_trajectory_input_port());
   builder.Connect(stabilizer->get_reference_output_port(), player->get_reference_input_port());
-  builder.Connect(player->get_reference_output_port(), plant->GetInputPort("reference"));
+  if (feedback) {
+    auto* balance = builder.AddNamedSystem<BalanceFeedback>("balance", robot);
+    builder.Connect(player->get_reference_output_port(), balance->get_reference_input_port());
+    builder.Connect(plant->GetOutputPort("state"), balance->get_state_input_port());
+    builder.Connect(plant->GetOutputPort("contacts"), balance->get_contacts_input_port());
+    builder.Connect(balance->get_reference_output_port(), plant->GetInputPort("reference"));
+  } else {
+    builder.Connect(player->get_reference_output_port(), plant->GetInputPort("reference"));
+  }
   const auto diagram = builder.Build();
   const double simulated = 1.0;
   for (auto _ : state) {
@@ -134,7 +144,8 @@ void BM_PlantPlaysTheReference(benchmark::State& state) {
 BENCHMARK_CAPTURE(BM_Stabilize, fft, std::string("fft"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Stabilize, preview, std::string("preview"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Stabilize, none, std::string("none"))->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_PlantPlaysTheReference)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_PlantPlaysTheReference, open_loop, false)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_PlantPlaysTheReference, feedback, true)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 
