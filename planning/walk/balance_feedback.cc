@@ -45,6 +45,11 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
   CheckRange("max_pitch", options_.max_pitch, 0.0, 0.5);
   CheckRange("max_roll", options_.max_roll, 0.0, 0.5);
   CheckRange("com_height", options_.com_height, 0.1, 3.0, true);
+  if (!(model_->gravity().z() < 0.0)) {
+    throw std::invalid_argument("BalanceFeedback: model '" + model_->name() + "' has gravity z " +
+                                FormatShort(model_->gravity().z()) +
+                                " m/s^2; the capture point needs gravity pointing down (-z)");
+  }
   const auto ankle = [&](const std::string& name, int axis) {
     if (!model_->HasJoint(name)) {
       throw std::invalid_argument("BalanceFeedback: model '" + model_->name() + "' has no joint '" + name +

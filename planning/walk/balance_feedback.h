@@ -51,8 +51,9 @@ struct BalanceFeedbackOptions {
 /// | output `reference` | vector nq + nv | `reference` with the loaded legs' ankle offsets |
 class BalanceFeedback final : public systems::LeafSystem {
  public:
-  /// Throws std::invalid_argument for a null model, one without a floating base, an ankle joint that is missing or
-  /// not revolute about its x (roll) or y (pitch) axis, and options out of range (naming the option and its range).
+  /// Throws std::invalid_argument for a null model, one without a floating base or without gravity along -z, an
+  /// ankle joint that is missing or not revolute about its x (roll) or y (pitch) axis, and options out of range
+  /// (naming the option and its range).
   BalanceFeedback(std::shared_ptr<const multibody::Model> model, const BalanceFeedbackOptions& options = {});
 
   const systems::InputPort& get_reference_input_port() const { return GetInputPort("reference"); }

@@ -79,6 +79,7 @@ TEST_F(WalkCommandTest, WritesConsistentOutputsAndTheSameBytesTwice) {
   const nlohmann::json walk = nlohmann::json::parse(Slurp(a / "walk.json"));
   ASSERT_TRUE(walk.at("walked").get<bool>()) << walk.at("reason");
   EXPECT_EQ(walk.at("stabilizer"), "preview");
+  EXPECT_TRUE(walk.at("feedback").get<bool>());
   // One entry per planned step, back to back in time, in the plan's order.
   const auto& steps = walk.at("steps");
   ASSERT_EQ(steps.size(), walk.at("plan").at("steps").get<std::size_t>());
@@ -129,6 +130,7 @@ TEST_F(WalkCommandTest, TheUnstabilisedWalkFallsFirst) {
   ASSERT_EQ(none.exit_code, 0) << none.err;
   const nlohmann::json unstabilised = nlohmann::json::parse(none.out);
   EXPECT_EQ(unstabilised.at("stabilization").at("method"), "none");
+  EXPECT_FALSE(unstabilised.at("feedback").get<bool>());
   for (const char* stage : {"footsteps_s", "trajectory_s", "stabilizer_s", "plant_s"}) {
     EXPECT_GE(unstabilised.at("seconds").at(stage).get<double>(), 0.0) << stage;
   }

@@ -29,7 +29,7 @@ namespace {
 
 using multibody::Model;
 
-// The humanoid standing: a valid [q; v] with the base 0.8 m up and the knees slightly bent.
+// The humanoid standing: a valid [q; v] with the base 0.8 m up and every joint at zero.
 Eigen::VectorXd Standing(const Model& model) {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(model.nq() + model.nv());
   x.head(model.nq()) = multibody::NeutralConfiguration(model);
@@ -81,7 +81,8 @@ TEST(BalanceFeedbackTest, ACapturePointAheadTiltsTheLoadedLegsBack) {
 }
 
 // A capture point to the left (here from a velocity: xi = c + c_dot / omega) rolls the legs to the right: the sole
-// rolls by -roll_gain * e_left about x with the base held, so the body leans right once the sole is flat.
+// rolls by -roll_gain * e_left about x with the base held, so the body leans right once the sole is flat. Both legs
+// are checked, since the right ankle's roll axis points the other way (-x).
 TEST(BalanceFeedbackTest, ACapturePointToTheLeftRollsTheLoadedLegsRightByTheVelocityTerm) {
   const auto model = test::Humanoid();
   BalanceFeedbackOptions options;
@@ -93,6 +94,11 @@ TEST(BalanceFeedbackTest, ACapturePointToTheLeftRollsTheLoadedLegsRightByTheVelo
   measured[model->nq() + 4] = 0.1;
   const double omega = std::sqrt(9.81 / options.com_height);
   const double e_left = 0.1 / omega;
+  const Eigen::VectorXd both = feedback.Correct(planned, measured, true, true);
+  for (const char* sole : {"l_sole", "r_sole"}) {
+    EXPECT_NEAR(SoleRoll(*model, both, sole) - SoleRoll(*model, planned, sole), -options.roll_gain * e_left,
+                1e-3 * options.roll_gain * e_left) << sole;
+  }
   const Eigen::VectorXd corrected = feedback.Correct(planned, measured, true, false);
   EXPECT_NEAR(SoleRoll(*model, corrected, "l_sole") - SoleRoll(*model, planned, "l_sole"), -options.roll_gain * e_left,
               1e-3 * options.roll_gain * e_left);
@@ -130,8 +136,11 @@ TEST(BalanceFeedbackTest, ALargeErrorIsClampedAndARobotInTheAirIsLeftAlone) {
   const Eigen::VectorXd corrected = feedback.Correct(planned, measured, true, true);
   EXPECT_NEAR(SolePitch(*model, corrected, "l_sole") - SolePitch(*model, planned, "l_sole"),
               feedback.options().max_pitch, 1e-9);
-  EXPECT_NEAR(std::abs(SoleRoll(*model, corrected, "l_sole") - SoleRoll(*model, planned, "l_sole")),
-              feedback.options().max_roll, 1e-9);
+  // The capture point is far to the right: the legs roll left (the soles by +max_roll with the base held).
+  for (const char* sole : {"l_sole", "r_sole"}) {
+    EXPECT_NEAR(SoleRoll(*model, corrected, sole) - SoleRoll(*model, planned, sole), feedback.options().max_roll, 1e-9)
+        << sole;
+  }
   EXPECT_TRUE(feedback.Correct(planned, measured, false, false).isApprox(planned, 0.0));
 }
 
@@ -170,6 +179,9 @@ TEST(BalanceFeedbackTest, RefusesBadModelsOptionsAndSizes) {
   const auto welded = std::make_shared<const Model>(
       multibody::ParseUrdfFile(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid.urdf", fixed));
   CAIRN_EXPECT_THROWS_WITH(BalanceFeedback{welded}, std::invalid_argument, "has no floating base");
+  const auto weightless = std::make_shared<const Model>(model->WithGravity(Eigen::Vector3d::Zero()));
+  CAIRN_EXPECT_THROWS_WITH(BalanceFeedback{weightless}, std::invalid_argument, "has gravity z 0 m/s^2",
+                           "gravity pointing down");
   BalanceFeedbackOptions options;
   options.pitch_gain = -1.0;
   CAIRN_EXPECT_THROWS_WITH(BalanceFeedback(model, options), std::invalid_argument, "pitch_gain -1 must be in [0, 1000]");
