@@ -2,10 +2,11 @@
 // point cloud — elevation fusion (eq. 1 with the D435 noise model), slope and roughness, hierarchical
 // traversability (Algorithm 1) — on 1 and 2 threads; and the parts alone. The paper runs its pipeline at 5 Hz;
 // elevation_mapping users report 0.5-3 s per update on comparable maps; the aim is at most 20 ms on 2 cores.
-// Also: A* across the map (planning/grid).
+// Also: A* across the map (planning/grid), and one probe of the arm in the physics plant (planning/scenarios).
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include <benchmark/benchmark.h>
 
@@ -14,6 +15,7 @@
 #include "cairn/perception/terrain/semantic_fusion.h"
 #include "cairn/perception/terrain/slope_roughness_filter.h"
 #include "cairn/planning/grid/grid_search.h"
+#include "cairn/planning/scenarios/probe_arm_plant.h"
 
 namespace {
 
@@ -114,6 +116,25 @@ void BM_GridAStar(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_GridAStar)->Unit(benchmark::kMillisecond);
+
+// One probe (ProbeArmPlant::Run: the arm reaches out, pushes its tip 2 cm into the ground and holds, 0.5 ms Bullet
+// steps): argument 0 soft soil (750 N/m, as under the scenario's soft plants), 1 deep water (no support).
+void BM_ProbeInThePlant(benchmark::State& state) {
+  const cairn::planning::ProbeArmPlant arm = cairn::planning::ProbeArmPlant::Load(
+      std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_probe_arm.urdf", cairn::planning::ProbeArmPlant::Options{});
+  cairn::planning::ProbeArmPlant::Ground ground;
+  ground.stiffness = state.range(0) == 0 ? 750.0 : 0.0;
+  ground.damping = state.range(0) == 0 ? 50.0 : 0.0;
+  std::mt19937 rng(1);
+  double simulated = 0.0;
+  for (auto _ : state) {
+    const auto probe = arm.Run(Eigen::Vector2d::Zero(), Eigen::Vector2d(0.6, 0.2), ground, &rng);
+    simulated = probe.simulated_time;
+    benchmark::DoNotOptimize(probe.forces.data());
+  }
+  state.counters["simulated_s"] = simulated;
+}
+BENCHMARK(BM_ProbeInThePlant)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

@@ -22,7 +22,7 @@ namespace cairn::perception {
 /// |---|---|---|
 /// | input `points_W` | Eigen::Matrix3Xd | the cloud, world frame |
 /// | input `sensor_W` | vector of size 3 | the sensor's position (ray lengths for the noise model) |
-/// | input `probabilities` | Eigen::MatrixXd | classes x points (SemanticFusion's classes); 0 columns = none |
+/// | input `probabilities` | Eigen::MatrixXd | SemanticFusion's classes (or input_labels) x points; 0 columns: none |
 /// | output `map` | GridMap | layers elevation, elevation_variance, semantic_*, slope, roughness (the state) |
 ///
 /// State: the GridMap and the fusion's scratch (abstract), updated by a periodic unrestricted update; the output

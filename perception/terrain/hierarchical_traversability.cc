@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "cairn/common/number_text.h"
 #include "cairn/common/parallel_for.h"
@@ -15,6 +17,16 @@ namespace cairn::perception {
 namespace {
 
 bool PositiveFinite(double x) { return x > 0.0 && std::isfinite(x); }
+
+// Named once: longer than the small-string buffer, a literal would allocate on every Compute().
+const std::string& VarianceLayer() {
+  static const std::string name = "traversability_variance";
+  return name;
+}
+const std::string& ElevationVarianceLayer() {
+  static const std::string name = "elevation_variance";
+  return name;
+}
 
 }  // namespace
 
@@ -52,25 +64,47 @@ HierarchicalTraversability::HierarchicalTraversability(const Options& options) :
                                 " rad and roughness " + FormatShort(options.critical_roughness) +
                                 " m must be positive and finite");
   }
+  for (const auto& [name, v] : {std::pair<const char*, double>{"probe_variance", options.probe_variance},
+                                 {"semantic_variance", options.semantic_variance},
+                                 {"geometry_variance", options.geometry_variance}}) {
+    if (!PositiveFinite(v)) {
+      throw std::invalid_argument(std::string("HierarchicalTraversability: ") + name + " " + FormatShort(v) +
+                                  " must be positive and finite (defaults: probe 0.0025, semantic 0.04, geometry "
+                                  "0.01)");
+    }
+  }
   threads_ = ResolveThreadCount(options.num_threads);
   for (const auto& c : classes) layer_names_.push_back(SemanticFusion::LayerName(c.name));
+}
+
+int HierarchicalTraversability::MostProbableClass(const double* semantic) const {
+  if (semantic == nullptr) return -1;
+  int best = -1;
+  double best_p = options_.semantic_threshold;
+  for (std::size_t c = 0; c < options_.semantic_values.size(); ++c) {
+    const double p = semantic[c];
+    if (p >= best_p) {  // NaN compares false: unknown classes never win
+      best = static_cast<int>(c);
+      best_p = p;
+    }
+  }
+  return best;
+}
+
+HierarchicalTraversability::Source HierarchicalTraversability::CellSource(double collapsibility,
+                                                                          const double* semantic, double slope,
+                                                                          double roughness) const {
+  if (!std::isnan(collapsibility)) return Source::kCollapsibility;
+  if (MostProbableClass(semantic) >= 0) return Source::kSemantics;
+  if (std::isnan(slope) || std::isnan(roughness)) return Source::kUnknown;
+  return Source::kGeometry;
 }
 
 double HierarchicalTraversability::CellValue(double collapsibility, const double* semantic, double slope,
                                              double roughness) const {
   if (!std::isnan(collapsibility)) return std::clamp(1.0 - collapsibility, 0.0, 1.0);
-  if (semantic != nullptr) {
-    int best = -1;
-    double best_p = options_.semantic_threshold;
-    for (std::size_t c = 0; c < options_.semantic_values.size(); ++c) {
-      const double p = semantic[c];
-      if (p >= best_p) {  // NaN compares false: unknown classes never win
-        best = static_cast<int>(c);
-        best_p = p;
-      }
-    }
-    if (best >= 0) return options_.semantic_values[best].traversability;
-  }
+  const int best = MostProbableClass(semantic);
+  if (best >= 0) return options_.semantic_values[best].traversability;
   if (std::isnan(slope) || std::isnan(roughness)) return std::numeric_limits<double>::quiet_NaN();
   const double s = slope / options_.critical_slope;
   const double r = roughness / options_.critical_roughness;
@@ -80,7 +114,12 @@ double HierarchicalTraversability::CellValue(double collapsibility, const double
 
 void HierarchicalTraversability::Compute(GridMap* map) const {
   if (!map->HasLayer("traversability")) map->AddLayer("traversability");
+  if (!map->HasLayer(VarianceLayer())) map->AddLayer(VarianceLayer());
   const int out = map->LayerIndex("traversability");
+  const int out_variance = map->LayerIndex(VarianceLayer());
+  const std::vector<double>* elevation_variance =
+      map->HasLayer(ElevationVarianceLayer()) ? &map->layer_data(map->LayerIndex(ElevationVarianceLayer())) : nullptr;
+  const double roughness_gain = options_.roughness_weight / options_.critical_roughness;
   const int k = static_cast<int>(options_.semantic_values.size());
   const std::vector<double>* collapsibility =
       map->HasLayer("collapsibility") ? &map->layer_data(map->LayerIndex("collapsibility")) : nullptr;
@@ -97,13 +136,29 @@ void HierarchicalTraversability::Compute(GridMap* map) const {
     }
   }
   std::vector<double>& t = map->layer_data(out);
+  std::vector<double>& t_variance = map->layer_data(out_variance);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   internal::ParallelBands(static_cast<int>(map->num_cells()), threads_, threads_, [&](int, int begin, int end) {
     double probabilities[kMaxClasses];
     for (int s = begin; s < end; ++s) {
       for (int c = 0; c < k; ++c) probabilities[c] = semantic[c] != nullptr ? (*semantic[c])[s] : nan;
-      t[s] = CellValue(collapsibility != nullptr ? (*collapsibility)[s] : nan, any_semantic ? probabilities : nullptr,
-                       slope != nullptr ? (*slope)[s] : nan, roughness != nullptr ? (*roughness)[s] : nan);
+      const double cs = collapsibility != nullptr ? (*collapsibility)[s] : nan;
+      const double* ps = any_semantic ? probabilities : nullptr;
+      const double ss = slope != nullptr ? (*slope)[s] : nan;
+      const double rs = roughness != nullptr ? (*roughness)[s] : nan;
+      t[s] = CellValue(cs, ps, ss, rs);
+      switch (CellSource(cs, ps, ss, rs)) {
+        case Source::kCollapsibility: t_variance[s] = options_.probe_variance; break;
+        case Source::kSemantics: t_variance[s] = options_.semantic_variance; break;
+        case Source::kGeometry: {
+          const double ev = elevation_variance != nullptr ? (*elevation_variance)[s] : nan;
+          // A cell of the filter's window without a height of its own has no variance: fall back to the constant.
+          t_variance[s] = ev > 0.0 && std::isfinite(ev) ? roughness_gain * roughness_gain * ev
+                                                         : options_.geometry_variance;
+          break;
+        }
+        case Source::kUnknown: t_variance[s] = nan; break;
+      }
     }
   });
 }

@@ -38,6 +38,15 @@ class HierarchicalTraversability {
     double critical_slope{0.5235987755982988};
     /// Critical roughness, m (about half a quadruped's step-height margin).
     double critical_roughness{0.05};
+    /// Measurement variance of a cell's traversability by the level of the rule that set it, for registering a
+    /// local traversability map into a global one (seed 001 §4.2: constants for probing and semantics, probing
+    /// the smaller because touch identifies the ground; the sensor model for geometry).
+    double probe_variance{0.0025};
+    double semantic_variance{0.04};
+    /// Geometry where the map has no "elevation_variance" layer. With it, the variance is propagated from the
+    /// heights' to first order through the roughness term: height noise of standard deviation sigma adds about
+    /// sigma to a window's roughness, so var(t) = (roughness_weight / critical_roughness)^2 * elevation_variance.
+    double geometry_variance{0.01};
     /// Threads (0 = one per core).
     int num_threads{0};
   };
@@ -47,7 +56,7 @@ class HierarchicalTraversability {
 
   /// Throws std::invalid_argument for a class value outside [0, 1], an empty or repeated class, more than
   /// kMaxClasses, a threshold outside (0, 1], negative or non-finite weights (or both zero), or non-positive
-  /// critical values.
+  /// critical values or variances.
   explicit HierarchicalTraversability(const Options& options);
   HierarchicalTraversability() : HierarchicalTraversability(Options{}) {}
 
@@ -57,10 +66,20 @@ class HierarchicalTraversability {
   /// unknown), or is null when there are none.
   double CellValue(double collapsibility, const double* semantic, double slope, double roughness) const;
 
-  /// Writes layer "traversability" of `map` (added if missing) from its layers.
+  /// Which level of the rule decides a cell (kUnknown where CellValue is NaN).
+  enum class Source { kCollapsibility, kSemantics, kGeometry, kUnknown };
+  /// The level CellValue() uses for these inputs.
+  Source CellSource(double collapsibility, const double* semantic, double slope, double roughness) const;
+
+  /// Writes layers "traversability" and "traversability_variance" of `map` (added if missing) from its layers: the
+  /// value by CellValue(), its measurement variance by the level that set it (Options; NaN where unknown), ready
+  /// for MapRegistration with variance_layer "traversability_variance".
   void Compute(GridMap* map) const;
 
  private:
+  // The class step 2 picks, or -1.
+  int MostProbableClass(const double* semantic) const;
+
   Options options_;
   std::vector<std::string> layer_names_;  // "semantic_<class>", named once
   int threads_{1};

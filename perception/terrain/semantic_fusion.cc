@@ -31,6 +31,51 @@ SemanticFusion::SemanticFusion(const Options& options) : options_(options) {
                                 " must be positive and finite (e.g. 0.04)");
   }
   threads_ = ResolveThreadCount(options.num_threads);
+  if (options.input_labels.empty()) {
+    if (!options.class_labels.empty()) {
+      throw std::invalid_argument("SemanticFusion: class_labels is given without input_labels; set input_labels to "
+                                  "the segmenter's labels (MaterialSegmenter::labels()) or leave class_labels empty");
+    }
+    for (int c = 0; c < k; ++c) row_class_.push_back(c);
+  } else {
+    const auto& labels = options.input_labels;
+    for (std::size_t a = 0; a < labels.size(); ++a) {
+      if (labels[a].empty()) throw std::invalid_argument("SemanticFusion: input label " + FormatShort(a) +
+                                                         " is empty");
+      for (std::size_t b = 0; b < a; ++b) {
+        if (labels[a] == labels[b]) {
+          throw std::invalid_argument("SemanticFusion: input label '" + labels[a] + "' is listed twice");
+        }
+      }
+    }
+    row_class_.assign(labels.size(), -1);
+    for (const auto& [name, members] : options.class_labels) {
+      const auto c = std::find(options.classes.begin(), options.classes.end(), name);
+      if (c == options.classes.end()) {
+        throw std::invalid_argument("SemanticFusion: class_labels names class '" + name +
+                                    "', which is not one of the classes; add it to classes or remove it");
+      }
+      for (const auto& label : members) {
+        const auto row = std::find(labels.begin(), labels.end(), label);
+        if (row == labels.end()) {
+          throw std::invalid_argument("SemanticFusion: class '" + name + "' is made of label '" + label +
+                                      "', which is not an input label; use one of the segmenter's labels");
+        }
+        int& owner = row_class_[static_cast<std::size_t>(row - labels.begin())];
+        if (owner >= 0) {
+          throw std::invalid_argument("SemanticFusion: label '" + label + "' belongs to classes '" +
+                                      options.classes[owner] + "' and '" + name + "'; give it to one class");
+        }
+        owner = static_cast<int>(c - options.classes.begin());
+      }
+    }
+    for (int c = 0; c < k; ++c) {
+      if (std::find(row_class_.begin(), row_class_.end(), c) == row_class_.end()) {
+        throw std::invalid_argument("SemanticFusion: class '" + options.classes[c] +
+                                    "' has no input label; map it in class_labels (e.g. plants: [grass])");
+      }
+    }
+  }
   for (const auto& c : options.classes) {
     layer_names_.push_back(LayerName(c));
     variance_names_.push_back(LayerName(c) + "_variance");
@@ -51,19 +96,35 @@ void SemanticFusion::Integrate(const Eigen::Matrix3Xd& points_W, const Eigen::Ma
     throw std::invalid_argument("SemanticFusion: " + FormatShort(static_cast<long long>(points_W.cols())) +
                                 " points exceed the limit of " + FormatShort(static_cast<long long>(kMaxPoints)));
   }
-  if (probabilities.rows() != k || probabilities.cols() != points_W.cols()) {
+  const int rows = num_input_rows();
+  const bool labelled = !options_.input_labels.empty();
+  if (probabilities.rows() != rows || probabilities.cols() != points_W.cols()) {
     throw std::invalid_argument("SemanticFusion: probabilities are " + FormatShort(static_cast<long>(probabilities.rows())) +
                                 " x " + FormatShort(static_cast<long>(probabilities.cols())) + "; expected " +
-                                FormatShort(k) + " classes x " + FormatShort(static_cast<long>(points_W.cols())) +
-                                " points");
+                                FormatShort(rows) + (labelled ? " input labels" : " classes") + " x " +
+                                FormatShort(static_cast<long>(points_W.cols())) + " points");
   }
   const int n = static_cast<int>(points_W.cols());
+  // A class's labels are summed: a little above 1 is rounding in the segmenter, more is not a distribution.
+  constexpr double kSumTolerance = 1e-6;
+  double class_sum[kMaxClasses];
   for (int p = 0; p < n; ++p) {
-    for (int c = 0; c < k; ++c) {
-      const double v = probabilities(c, p);
+    std::fill(class_sum, class_sum + k, 0.0);
+    for (int r = 0; r < rows; ++r) {
+      const double v = probabilities(r, p);
       if (!(v >= 0.0 && v <= 1.0)) {
-        throw std::invalid_argument("SemanticFusion: probability " + FormatShort(v) + " of class '" +
-                                    options_.classes[c] + "' at point " + FormatShort(p) + " is not in [0, 1]");
+        throw std::invalid_argument("SemanticFusion: probability " + FormatShort(v) + " of " +
+                                    (labelled ? "label '" + options_.input_labels[r]
+                                              : "class '" + options_.classes[r]) +
+                                    "' at point " + FormatShort(p) + " is not in [0, 1]");
+      }
+      if (row_class_[r] >= 0) class_sum[row_class_[r]] += v;
+    }
+    for (int c = 0; c < k; ++c) {
+      if (class_sum[c] > 1.0 + kSumTolerance) {
+        throw std::invalid_argument("SemanticFusion: the labels of class '" + options_.classes[c] + "' sum to " +
+                                    FormatShort(class_sum[c]) + " at point " + FormatShort(p) +
+                                    "; a segmenter's probabilities sum to at most 1");
       }
     }
   }
@@ -99,12 +160,15 @@ void SemanticFusion::Integrate(const Eigen::Matrix3Xd& points_W, const Eigen::Ma
       const int s = cell_of_point_[p];
       if (s < lo || s >= hi) continue;
       ++counts_[s];
-      for (int c = 0; c < k; ++c) sums_[static_cast<std::size_t>(s) * k + c] += probabilities(c, p);
+      for (int r = 0; r < rows; ++r) {
+        if (row_class_[r] >= 0) sums_[static_cast<std::size_t>(s) * k + row_class_[r]] += probabilities(r, p);
+      }
     }
     for (int s = lo; s < hi; ++s) {
       if (counts_[s] == 0) continue;
       for (int c = 0; c < k; ++c) {
-        const double z = sums_[static_cast<std::size_t>(s) * k + c] / counts_[s];
+        // Sums of labels were checked to within kSumTolerance of 1; the rest is rounding.
+        const double z = std::min(1.0, sums_[static_cast<std::size_t>(s) * k + c] / counts_[s]);
         KalmanCellUpdate(z, var_m, &map->layer_data(layer_index[c])[s], &map->layer_data(variance_index[c])[s]);
       }
     }

@@ -1,5 +1,7 @@
 #include "cairn/perception/terrain/traversability_analyzer.h"
 
+#include "cairn/perception/terrain/kalman_cell_update.h"
+
 namespace cairn::perception {
 
 TraversabilityAnalyzer::TraversabilityAnalyzer(const HierarchicalTraversability::Options& options) : rule_(options) {
@@ -31,11 +33,16 @@ void TraversabilityAnalyzer::CalcMap(const GridMap& map, const std::vector<Probe
                                      GridMap* out) const {
   *out = map;
   if (!out->HasLayer("collapsibility")) out->AddLayer("collapsibility");
+  if (!out->HasLayer("collapsibility_variance")) out->AddLayer("collapsibility_variance");
   const int c = out->LayerIndex("collapsibility");
+  const int c_variance = out->LayerIndex("collapsibility_variance");
+  const double variance = rule_.options().probe_variance;
   for (const ProbedRegion& probe : probes) {
     for (const Eigen::Vector2d& p : probe.points) {
       Eigen::Vector2i cell;
-      if (out->CellOf(p, &cell)) out->at(c, cell.x(), cell.y()) = probe.collapsibility;
+      if (!out->CellOf(p, &cell)) continue;
+      KalmanCellUpdate(probe.collapsibility, variance, &out->at(c, cell.x(), cell.y()),
+                       &out->at(c_variance, cell.x(), cell.y()));
     }
   }
   rule_.Compute(out);

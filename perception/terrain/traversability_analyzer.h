@@ -14,15 +14,19 @@
 
 namespace cairn::perception {
 
-/// Writes the probes' collapsibility into a "collapsibility" layer of a copy of the input map (each probed
-/// region's points mark their cells; a later probe overrides an earlier one) and computes "traversability"
-/// with HierarchicalTraversability (Algorithm 1). A per-cell rule over the map, cheap enough for an output.
+/// Fuses the probes' collapsibility into the "collapsibility" layer of a copy of the input map (each probed
+/// region's points mark their cells; probes in their order, by the Kalman rule of eq. 1 at the rule's
+/// probe_variance, so a cell probed twice holds the variance-weighted mean) and computes "traversability" and
+/// its measurement variance with HierarchicalTraversability (Algorithm 1). A per-cell rule over the map, cheap
+/// enough for an output. The map is the mapper's: fused in place over time when it is fixed in the world;
+/// register a robot-centred one (ElevationMapper's follow_sensor) into a fixed global map with MapRegistration
+/// and variance_layer "traversability_variance" (seed 001 §4.2).
 ///
 /// | port | type | meaning |
 /// |---|---|---|
 /// | input `map` | GridMap | elevation, semantic_*, slope, roughness (ElevationMapper's `map`) |
 /// | input `probes` | std::vector<ProbedRegion> | every probe so far |
-/// | output `map` | GridMap | the input's layers plus collapsibility and traversability |
+/// | output `map` | GridMap | the input's layers plus collapsibility(_variance) and traversability(_variance) |
 /// | output `traversability` | Eigen::MatrixXd | the traversability by map index (i along x, j along y), NaN unknown |
 class TraversabilityAnalyzer final : public systems::LeafSystem {
  public:

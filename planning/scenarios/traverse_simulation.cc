@@ -23,9 +23,6 @@ namespace {
 
 using perception::GridMap;
 
-// Measurement variance of a probe's collapsibility: probing touches the ground, so it is far more certain than a
-// segmentation (seed 001 §4.2); SemanticFusion's default is 0.04.
-constexpr double kProbeVariance = 0.0025;
 // Sample rate of the simulated force sensor, Hz.
 constexpr double kForceSensorRate = 200.0;
 
@@ -154,8 +151,10 @@ TraverseSimulation::Result TraverseSimulation::Run() const {
   };
   const auto assign = [&](const std::vector<int>& storage, double c) {
     for (int cell : storage) {
-      perception::KalmanCellUpdate(c, kProbeVariance, &map.layer_data(collapsibility)[cell],
-                       &map.layer_data(collapsibility_variance)[cell]);
+      // Probing touches the ground, so it is far more certain than a segmentation (seed 001 §4.2).
+      perception::KalmanCellUpdate(c, traversability.options().probe_variance,
+                                   &map.layer_data(collapsibility)[cell],
+                                   &map.layer_data(collapsibility_variance)[cell]);
     }
   };
 

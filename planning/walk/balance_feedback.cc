@@ -112,9 +112,9 @@ void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::Vecto
   const int nq = model_->nq();
   const double omega = std::sqrt(-model_->gravity().z() / options_.com_height);
   const auto capture_point = [&](const Eigen::VectorXd& x, multibody::Data* data) {
-    const Eigen::VectorXd q = x.head(nq);
-    const Eigen::Vector3d c = multibody::CenterOfMass(*model_, *data, q);
-    const Eigen::Vector3d c_dot = multibody::CenterOfMassJacobian(*model_, *data, q) * x.tail(model_->nv());
+    // The Jacobian pass also computes the COM (data->com), so one kinematics pass serves both.
+    const Eigen::Vector3d c_dot = multibody::CenterOfMassJacobian(*model_, *data, x.head(nq)) * x.tail(model_->nv());
+    const Eigen::Vector3d c = data->com;
     return Eigen::Vector2d((c + c_dot / omega).head<2>());
   };
   const Eigen::Vector2d error = capture_point(state, measured) - capture_point(reference, planned);

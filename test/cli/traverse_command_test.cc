@@ -7,6 +7,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "run_cairn.h"
@@ -54,6 +55,11 @@ TEST_F(TraverseCommandTest, WritesLayersAndSummary) {
   EXPECT_THAT(summary, HasSubstr("\"reached_goal\": true"));
   EXPECT_THAT(summary, HasSubstr("\"stepped_on_collapsible\": false"));
   EXPECT_THAT(summary, HasSubstr("\"probes_made\": 3"));
+  // The robot walked around the soft plants and the water: longer than the straight 8 m from start to goal, and
+  // not absurdly so.
+  const double walked = nlohmann::json::parse(summary).at("path_length_m").get<double>();
+  EXPECT_GT(walked, 8.0);
+  EXPECT_LT(walked, 16.0);
   // The folder is replaced as a whole; a foreign file in it is refused before anything is written.
   std::ofstream(out / "notes.txt") << "mine";
   const auto refused = RunCairn("traverse --scenario " + kScenario + " --out " + out.string());

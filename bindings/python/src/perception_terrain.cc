@@ -175,6 +175,10 @@ void DefinePerceptionTerrain(py::module_ m) {
       .def(py::init<>(), "Defaults (plants, water).")
       .def_readwrite("classes", &SemanticFusion::Options::classes, "Class names.")
       .def_readwrite("measurement_variance", &SemanticFusion::Options::measurement_variance, "Per update.")
+      .def_readwrite("input_labels", &SemanticFusion::Options::input_labels,
+                     "The segmenter's labels, when the rows come straight from it (else empty).")
+      .def_readwrite("class_labels", &SemanticFusion::Options::class_labels,
+                     "Dict: class -> its labels, e.g. {'plants': ['grass'], 'water': ['water']}.")
       .def_readwrite("num_threads", &SemanticFusion::Options::num_threads, "0: one per core.");
   semantic.def(py::init<const SemanticFusion::Options&>(), py::arg("options") = SemanticFusion::Options{}, "With options.")
       .def("AddLayers", [](const SemanticFusion& self, GridMap& map) { self.AddLayers(&map); }, py::arg("map"),
@@ -185,6 +189,7 @@ void DefinePerceptionTerrain(py::module_ m) {
             self.Integrate(points, p, &map);
           },
           py::arg("points_W"), py::arg("probabilities"), py::arg("map"), "Fuses classes x N probabilities.")
+      .def("num_input_rows", &SemanticFusion::num_input_rows, "Rows Integrate() expects.")
       .def_static("LayerName", &SemanticFusion::LayerName, py::arg("class_name"), "\"semantic_<class>\".");
 
   py::class_<CollapsibilityEstimator> collapsibility(m, "CollapsibilityEstimator",
@@ -227,6 +232,12 @@ void DefinePerceptionTerrain(py::module_ m) {
       .def_readwrite("roughness_weight", &HierarchicalTraversability::Options::roughness_weight, "w2.")
       .def_readwrite("critical_slope", &HierarchicalTraversability::Options::critical_slope, "rad.")
       .def_readwrite("critical_roughness", &HierarchicalTraversability::Options::critical_roughness, "m.")
+      .def_readwrite("probe_variance", &HierarchicalTraversability::Options::probe_variance,
+                     "Variance of a probed cell's traversability.")
+      .def_readwrite("semantic_variance", &HierarchicalTraversability::Options::semantic_variance,
+                     "Variance of a cell set by its class.")
+      .def_readwrite("geometry_variance", &HierarchicalTraversability::Options::geometry_variance,
+                     "Variance of a geometric cell without elevation_variance.")
       .def_readwrite("num_threads", &HierarchicalTraversability::Options::num_threads, "0: one per core.");
   rule.def(py::init<const HierarchicalTraversability::Options&>(),
            py::arg("options") = HierarchicalTraversability::Options{}, "With options.")
@@ -241,8 +252,9 @@ void DefinePerceptionTerrain(py::module_ m) {
           },
           py::arg("collapsibility"), py::arg("semantic"), py::arg("slope"), py::arg("roughness"),
           "The rule for one cell (NaN = unknown).")
+      .def("options", &HierarchicalTraversability::options, py::return_value_policy::copy, "The options (a copy).")
       .def("Compute", [](const HierarchicalTraversability& self, GridMap& map) { self.Compute(&map); }, py::arg("map"),
-           "Writes layer traversability.");
+           "Writes layers traversability and traversability_variance.");
 
   py::class_<MapRegistration> registration(m, "MapRegistration", "Local layers into a global map by eq. (1).");
   py::class_<MapRegistration::Layer>(registration, "Layer", "One layer to register.")

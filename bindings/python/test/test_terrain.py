@@ -156,3 +156,107 @@ def test_probing_systems_in_a_diagram():
     assert supervisor.get_pause_output_port().Eval(supervisor.CreateDefaultContext())[0] == 0.0
     diagram = planning.BuildProbingDiagram(scenario, ARM)
     assert diagram.GetSubsystemByName("arm") is not None
+
+
+def test_semantic_fusion_maps_segmenter_labels_to_classes():
+    options = perception.SemanticFusion.Options()
+    options.input_labels = ["asphalt", "grass", "moss", "water"]
+    options.class_labels = {"plants": ["grass", "moss"], "water": ["water"]}
+    fusion = perception.SemanticFusion(options)
+    assert fusion.num_input_rows() == 4
+    grid = perception.GridMap([2, 1], 1.0, [0.0, 0.0])
+    fusion.AddLayers(grid)
+    points = np.array([[-0.5, -0.5, 0.5], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+    rows = np.array([[0.1, 0.0, 0.1], [0.5, 0.6, 0.0], [0.3, 0.2, 0.0], [0.1, 0.2, 0.9]])
+    fusion.Integrate(points, rows, grid)
+    assert grid.at("semantic_plants", 0, 0) == pytest.approx(0.8)  # grass + moss, averaged over the cell's points
+    assert grid.at("semantic_water", 0, 0) == pytest.approx(0.15)
+    assert grid.at("semantic_water", 1, 0) == pytest.approx(0.9)
+    options.class_labels = {"plants": ["grass"], "water": ["lake"]}
+    with pytest.raises(ValueError, match="label 'lake'.*not an input label"):
+        perception.SemanticFusion(options)
+
+
+def test_registration_weighs_probes_above_semantics():
+    rule = perception.HierarchicalTraversability()
+    registration = perception.MapRegistration(
+        [perception.MapRegistration.Layer("traversability", "traversability", variance_layer="traversability_variance")])
+    world = perception.GridMap([1, 1], 0.1, [0.0, 0.0])
+    registration.AddLayers(world)
+
+    def local(collapsibility):
+        grid = perception.GridMap([1, 1], 0.1, [0.0, 0.0])
+        grid.AddLayer("semantic_plants", 0.9)
+        grid.AddLayer("collapsibility", collapsibility)
+        rule.Compute(grid)
+        return grid
+
+    for _ in range(3):
+        registration.Register(local(float("nan")), world)
+    assert world.at("traversability", 0, 0) == pytest.approx(0.8)
+    registration.Register(local(0.85), world)
+    vs, vp = rule.options().semantic_variance, rule.options().probe_variance
+    expected = (vp * 0.8 + vs / 3 * 0.15) / (vs / 3 + vp)
+    assert world.at("traversability", 0, 0) == pytest.approx(expected)
+    assert world.at("traversability", 0, 0) < 0.5
+
+
+def test_grid_path_planner_plans_around_a_wall_in_an_event():
+    values = np.ones((10, 10))
+    values[5, :8] = 0.0  # a wall at x = 0.55 with a gap at its top
+    planner = planning.GridPathPlanner(0.1, np.array([0.0, 0.0]), planning.GridSearch.Options(), 0.1)
+    context = planner.CreateDefaultContext()
+    planner.get_traversability_input_port().FixValue(context, values)
+    planner.get_start_input_port().FixValue(context, np.array([0.15, 0.15]))
+    planner.get_goal_input_port().FixValue(context, np.array([0.85, 0.15]))
+    assert planner.get_path_output_port().Eval(context).shape[1] == 0  # nothing planned before the first event
+    simulator = Simulator(planner, context)
+    simulator.AdvanceTo(0.05)
+    path = planner.get_path_output_port().Eval(simulator.get_context())
+    status = planner.get_status_output_port().Eval(simulator.get_context())
+    assert status[0] == 1.0
+    np.testing.assert_allclose(path[:, 0], [0.15, 0.15])
+    np.testing.assert_allclose(path[:, -1], [0.85, 0.15])
+    crossings = path[:, np.abs(path[0] - 0.55) < 1e-9]
+    assert crossings.shape[1] >= 1 and (crossings[1] > 0.8).all()  # through the gap only
+
+
+def test_probe_supervisor_pauses_probes_and_assigns_the_cluster():
+    grid = perception.GridMap([20, 20], 0.1, [0.0, 0.0])
+    grid.AddLayer("semantic_plants", 0.0)
+    grid.AddLayer("semantic_water", 0.0)
+    plants = grid.Layer("semantic_plants")
+    for x in (0.55, 0.65, 0.75):
+        for y in (-0.05, 0.05):
+            i, j = grid.CellOf([x, y])
+            plants[i, j] = 0.9
+    grid.SetLayer("semantic_plants", plants)
+    options = planning.ProbingPlanner.Options()
+    options.reach = 1.0
+    supervisor = planning.ProbeSupervisor(options, 0.5, 3, 0.1)
+    context = supervisor.CreateDefaultContext()
+    supervisor.GetInputPort("map").FixValue(context, grid)
+    supervisor.GetInputPort("robot").FixValue(context, np.array([0.0, 0.0]))
+    supervisor.GetInputPort("collapsibility").FixValue(context, np.array([float("nan"), 0.0]))
+    simulator = Simulator(supervisor, context)
+    simulator.AdvanceTo(0.05)
+    command = supervisor.get_probe_command_output_port().Eval(simulator.get_context())
+    assert supervisor.get_pause_output_port().Eval(simulator.get_context())[0] == 1.0
+    assert command[2] == 1.0 and 0.5 <= command[0] < 0.8
+    supervisor.GetInputPort("collapsibility").FixValue(simulator.get_mutable_context(), np.array([0.85, 20.0]))
+    simulator.AdvanceTo(0.35)
+    assert supervisor.get_pause_output_port().Eval(simulator.get_context())[0] == 0.0
+    probes = supervisor.GetOutputPort("probes").Eval(simulator.get_context())
+    assert len(probes) == 1 and probes[0].collapsibility == 0.85 and len(probes[0].points) == 6
+    assert supervisor.probes_made(simulator.get_context()) == 1
+
+
+def test_run_probing_diagram_probes_soft_plants_and_reaches_the_goal():
+    scenario = planning.TraverseScenario.Load(SCENARIO)
+    run = planning.RunProbingDiagram(scenario, ARM, 300.0)
+    assert run.reached_goal, run.failure
+    assert run.probes_made == 3 and run.probes[0].region == "soft plants"
+    assert 0.75 < run.collapsibilities[0] < 0.95
+    assert run.collapsible_steps == 0 and "soft plants" not in run.regions_entered
+    blind = planning.RunProbingDiagram(scenario, ARM, 300.0, probing=False)
+    assert blind.collapsible_steps > 0

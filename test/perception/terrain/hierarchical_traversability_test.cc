@@ -58,6 +58,39 @@ TEST(HierarchicalTraversabilityTest, UnknownGeometryIsUnknownAndMissingLayersAre
   EXPECT_DOUBLE_EQ(map.at(map.LayerIndex("traversability"), 1, 1), 1.0);
 }
 
+// Seed 001 §4.2 registers each cell's local traversability with the variance of the analysis that set it:
+// probing below semantics (constants), geometry from the sensor model (here: the elevation's variance).
+TEST(HierarchicalTraversabilityTest, EachCellsVarianceComesFromTheLevelThatSetIt) {
+  HierarchicalTraversability rule;
+  GridMap map(Eigen::Vector2i(5, 1), 1.0, Eigen::Vector2d::Zero());
+  const int c = map.AddLayer("collapsibility");
+  const int plants = map.AddLayer("semantic_plants");
+  map.AddLayer("semantic_water", 0.0);
+  map.AddLayer("slope", 0.0);
+  const int roughness = map.AddLayer("roughness", 0.01);
+  const int ev = map.AddLayer("elevation_variance");
+  map.at(c, 0, 0) = 0.4;       // probed
+  map.at(plants, 1, 0) = 0.9;  // plants
+  map.at(ev, 2, 0) = 1e-4;     // geometry with a sensor variance
+  // cell 3: geometry without a height of its own (e.g. filled by the filter's window)
+  map.at(roughness, 4, 0) = NAN;  // nothing known
+  rule.Compute(&map);
+  const int t = map.LayerIndex("traversability");
+  const int tv = map.LayerIndex("traversability_variance");
+  EXPECT_DOUBLE_EQ(map.at(t, 0, 0), 0.6);
+  EXPECT_DOUBLE_EQ(map.at(tv, 0, 0), rule.options().probe_variance);
+  EXPECT_DOUBLE_EQ(map.at(t, 1, 0), 0.8);
+  EXPECT_DOUBLE_EQ(map.at(tv, 1, 0), rule.options().semantic_variance);
+  EXPECT_DOUBLE_EQ(map.at(t, 2, 0), 0.9);                 // 1 - 0.5 * 0.01 / 0.05
+  EXPECT_NEAR(map.at(tv, 2, 0), 100.0 * 1e-4, 1e-15);     // (0.5 / 0.05)^2 * 1e-4
+  EXPECT_DOUBLE_EQ(map.at(tv, 3, 0), rule.options().geometry_variance);
+  EXPECT_TRUE(std::isnan(map.at(t, 4, 0)));
+  EXPECT_TRUE(std::isnan(map.at(tv, 4, 0)));
+  EXPECT_LT(rule.options().probe_variance, rule.options().semantic_variance);
+  EXPECT_EQ(rule.CellSource(0.4, nullptr, NAN, NAN), HierarchicalTraversability::Source::kCollapsibility);
+  EXPECT_EQ(rule.CellSource(NAN, nullptr, NAN, 0.0), HierarchicalTraversability::Source::kUnknown);
+}
+
 TEST(HierarchicalTraversabilityTest, RejectsBadOptions) {
   HierarchicalTraversability::Options o;
   o.semantic_values = {{"plants", 1.2}};
@@ -66,6 +99,10 @@ TEST(HierarchicalTraversabilityTest, RejectsBadOptions) {
   o = {};
   o.critical_slope = 0.0;
   CAIRN_EXPECT_THROWS_WITH(HierarchicalTraversability{o}, std::invalid_argument, "critical slope 0 rad");
+  o = {};
+  o.probe_variance = -1.0;
+  CAIRN_EXPECT_THROWS_WITH(HierarchicalTraversability{o}, std::invalid_argument, "probe_variance -1",
+                           "positive and finite");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cairn/perception/terrain/hierarchical_traversability.h"
 #include "expect_throws.h"
 
 namespace cairn::perception {
@@ -38,6 +39,41 @@ TEST(MapRegistrationTest, FusesLocalLayersIntoTheGlobalMap) {
   CAIRN_EXPECT_THROWS_WITH(registration.Register(bare, &global), std::invalid_argument,
                            "no layer named 'traversability'");
   CAIRN_EXPECT_THROWS_WITH(MapRegistration({{"a", "a", 0.0, ""}}), std::invalid_argument, "variance 0 of layer 'a'");
+}
+
+// Seed 001 §4.2: the local traversability is registered with the variance of the analysis behind it, and
+// "the collapsibility analysis has a lower variance (higher confidence) than the semantic analysis". A patch of
+// plants seen three times (0.8) and then probed soft (C = 0.85, so 0.15) ends near the probe's value; a probed
+// cell then seen as plants again barely moves.
+TEST(MapRegistrationTest, ProbingOutweighsSemanticsInTheRegisteredTraversability) {
+  const HierarchicalTraversability rule;
+  const MapRegistration registration({{"traversability", "traversability", 0.0, "traversability_variance"}});
+  const auto local_map = [&](double collapsibility) {
+    GridMap local(Eigen::Vector2i(1, 1), 0.1, Eigen::Vector2d::Zero());
+    local.AddLayer("semantic_plants", 0.9);
+    local.AddLayer("collapsibility", collapsibility);
+    rule.Compute(&local);
+    return local;
+  };
+  const double vs = rule.options().semantic_variance, vp = rule.options().probe_variance;
+  const Eigen::Vector2d cell = Eigen::Vector2d::Zero();
+
+  GridMap seen(Eigen::Vector2i(1, 1), 0.1, Eigen::Vector2d::Zero());
+  registration.AddLayers(&seen);
+  for (int k = 0; k < 3; ++k) registration.Register(local_map(NAN), &seen);
+  EXPECT_DOUBLE_EQ(seen.ValueAt("traversability", cell), 0.8);
+  EXPECT_NEAR(seen.ValueAt("traversability_variance", cell), vs / 3, 1e-15);
+  registration.Register(local_map(0.85), &seen);
+  const double expected = (vp * 0.8 + vs / 3 * 0.15) / (vs / 3 + vp);
+  EXPECT_NEAR(seen.ValueAt("traversability", cell), expected, 1e-12);
+  EXPECT_LT(seen.ValueAt("traversability", cell), 0.5);  // semi-untraversable after one probe
+
+  GridMap probed(Eigen::Vector2i(1, 1), 0.1, Eigen::Vector2d::Zero());
+  registration.AddLayers(&probed);
+  registration.Register(local_map(0.85), &probed);
+  registration.Register(local_map(NAN), &probed);
+  EXPECT_NEAR(probed.ValueAt("traversability", cell), (vs * 0.15 + vp * 0.8) / (vs + vp), 1e-12);
+  EXPECT_LT(probed.ValueAt("traversability", cell), 0.2);
 }
 
 }  // namespace
