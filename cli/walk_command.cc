@@ -106,17 +106,17 @@ std::vector<WalkStepComparison> CompareSteps(const WalkRecord& record) {
   return steps;
 }
 
-// Where the soles ended against the goal stance: the larger of the two feet's horizontal distances.
-// `soles` names the left and the right sole body (the plant's sole_bodies).
-double GoalDistance(const multibody::Model& robot, const std::vector<std::string>& soles, const WalkRecord& record,
-                    const StanceGoal& goal) {
+// Where the soles ended against a stance (the goal's, or the plan's last): the larger of the two feet's horizontal
+// distances. `soles` names the left and the right sole body (the plant's sole_bodies).
+double SoleDistance(const multibody::Model& robot, const std::vector<std::string>& soles, const WalkRecord& record,
+                    const Stance& stance) {
   multibody::Data data(robot);
   multibody::ForwardKinematics(robot, data, record.samples.back().q);
   const auto sole = [&](const std::string& name) {
     return data.X_world[static_cast<std::size_t>(robot.GetBodyIndex(name))].translation().head<2>().eval();
   };
-  const double left = (sole(soles.at(0)) - Eigen::Vector2d(goal.stance.left.x, goal.stance.left.y)).norm();
-  const double right = (sole(soles.at(1)) - Eigen::Vector2d(goal.stance.right.x, goal.stance.right.y)).norm();
+  const double left = (sole(soles.at(0)) - Eigen::Vector2d(stance.left.x, stance.left.y)).norm();
+  const double right = (sole(soles.at(1)) - Eigen::Vector2d(stance.right.x, stance.right.y)).norm();
   return std::max(left, right);
 }
 
@@ -156,9 +156,16 @@ std::string WalkJson(const FootstepScenario& scenario, const std::string& object
   }
   if (record.start.ready) {
     const StanceGoal& goal = scenario.goal();
-    const double distance = GoalDistance(robot, soles, record, goal);
+    const double distance = SoleDistance(robot, soles, record, goal.stance);
     json.Key("goal").BeginObject().Key("reached").Bool(!record.fell && distance <= goal.position_tolerance);
-    json.Key("distance").Number(distance, f6).Key("tolerance").Number(goal.position_tolerance, f6).EndObject();
+    json.Key("distance").Number(distance, f6).Key("tolerance").Number(goal.position_tolerance, f6);
+    // The plan may end anywhere within the goal's tolerance: how far the soles ended from where it put them.
+    const std::size_t steps = record.plan.steps.size();
+    MaybeNumber(json, "last_stance_distance",
+                steps > 0 ? SoleDistance(robot, soles, record, record.plan.StanceAfter(static_cast<int>(steps) - 1))
+                          : std::nan(""),
+                f6);
+    json.EndObject();
     json.Key("fell").Bool(record.fell).Key("fall_reason").String(record.fall_reason);
     MaybeNumber(json, "fall_time", record.fell ? record.duration : std::nan(""), f3);
     json.Key("executed_duration").Number(record.duration, f3);
@@ -280,9 +287,14 @@ int Run(const WalkArguments& args) {
     std::printf("reference  %zu samples at %.4g s; ZMP RMS error %.4f -> %.4f m\n", record.reference.q.size(),
                 record.reference.period, record.reference.report.rms_error_before,
                 record.reference.report.rms_error_after);
-    std::printf("walked     %.3f s of %.3f s; goal distance %.3f m (tolerance %.3f m)\n", record.duration,
-                record.reference.duration() + args.settle_time, GoalDistance(*robot, setup.plant.sole_bodies, record, scenario.goal()),
-                scenario.goal().position_tolerance);
+    const std::size_t steps = record.plan.steps.size();
+    std::printf("walked     %.3f s of %.3f s; goal distance %.3f m (tolerance %.3f m), %.3f m from the plan's end\n",
+                record.duration, record.reference.duration() + args.settle_time,
+                SoleDistance(*robot, setup.plant.sole_bodies, record, scenario.goal().stance),
+                scenario.goal().position_tolerance,
+                steps > 0 ? SoleDistance(*robot, setup.plant.sole_bodies, record,
+                                         record.plan.StanceAfter(static_cast<int>(steps) - 1))
+                          : std::nan(""));
     std::printf("fall       %s\n", record.fell ? record.fall_reason.c_str() : "none");
     std::printf("slips      %zu\n", record.slips.size());
     std::printf("energy     E_COM %.2f J, E_ele %.2f J measured\n", last.com_energy, last.electrical_energy);

@@ -11,6 +11,8 @@
 #include <cairn/common/number_text.h>
 #include <cairn/multibody/center_of_mass.h>
 #include <cairn/multibody/data.h>
+#include <cairn/multibody/jacobians.h>
+#include <cairn/multibody/kinematics.h>
 #include <cairn/multibody/plant/sole_state.h>
 
 namespace cairn::planning {
@@ -21,6 +23,7 @@ namespace {
 struct Scratch {
   multibody::Data measured;
   multibody::Data reference;
+  Eigen::MatrixXd jacobian;  // 6 x nv
 };
 
 void CheckRange(const char* name, double value, double low, double high, bool open_low = false) {
@@ -63,6 +66,31 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
     }
     return Ankle{joint.idx_q, static_cast<double>(joint.axis_sign)};
   };
+  CheckRange("foothold_gain", options_.foothold_gain, 0.0, 1.0);
+  const std::string* soles[2] = {&options_.left_sole, &options_.right_sole};
+  for (int side = 0; side < 2; ++side) {
+    if (!model_->HasFrame(*soles[side])) {
+      throw std::invalid_argument("BalanceFeedback: model '" + model_->name() + "' has no frame '" + *soles[side] +
+                                  "'; name the sole frames in BalanceFeedbackOptions");
+    }
+    sole_frame_[side] = model_->GetFrameIndex(*soles[side]);
+    int joints = 0;
+    for (int body = model_->frame(sole_frame_[side]).body; body > 1; body = model_->parent(body)) {
+      const multibody::Joint& joint = model_->joint(body);
+      if (joint.nv == 0) continue;
+      if (joint.nv != 1 || joints == 6) {
+        joints = -1;
+        break;
+      }
+      leg_v_[side][joints] = joint.idx_v;
+      leg_q_[side][joints] = joint.idx_q;
+      ++joints;
+    }
+    if (joints != 6) {
+      throw std::invalid_argument("BalanceFeedback: the sole frame '" + *soles[side] +
+                                  "' is not on a leg of six one-axis joints below the floating base");
+    }
+  }
   pitch_[0] = ankle(options_.left_ankle_pitch, 1);
   pitch_[1] = ankle(options_.right_ankle_pitch, 1);
   roll_[0] = ankle(options_.left_ankle_roll, 0);
@@ -73,7 +101,8 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
   DeclareVectorInputPort("state", n);
   DeclareAbstractInputPort("contacts", systems::Value<std::vector<multibody::SoleState>>(
                                            std::vector<multibody::SoleState>(2)));
-  scratch_ = DeclarePerContextStorage(systems::Value<Scratch>(Scratch{multibody::Data(*model_), multibody::Data(*model_)}));
+  scratch_ = DeclarePerContextStorage(systems::Value<Scratch>(
+      Scratch{multibody::Data(*model_), multibody::Data(*model_), Eigen::MatrixXd::Zero(6, model_->nv())}));
   DeclareVectorOutputPort(
       "reference", n,
       [this](const systems::Context& context, Eigen::VectorXd* y) {
@@ -86,7 +115,8 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
         const Eigen::VectorXd& reference = get_reference_input_port().Eval<Eigen::VectorXd>(context);
         const Eigen::VectorXd& state = get_state_input_port().Eval<Eigen::VectorXd>(context);
         *y = reference;
-        Apply(reference, state, soles[0].loaded, soles[1].loaded, &scratch.measured, &scratch.reference, y);
+        Apply(reference, state, soles[0].loaded, soles[1].loaded, &scratch.measured, &scratch.reference,
+              &scratch.jacobian, y);
       },
       {input_port_ticket(0), input_port_ticket(1), input_port_ticket(2)});
 }
@@ -100,14 +130,15 @@ Eigen::VectorXd BalanceFeedback::Correct(const Eigen::VectorXd& reference, const
                                 FormatShort(state.size()));
   }
   multibody::Data measured(*model_), planned(*model_);
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(6, model_->nv());
   Eigen::VectorXd y = reference;
-  Apply(reference, state, left_loaded, right_loaded, &measured, &planned, &y);
+  Apply(reference, state, left_loaded, right_loaded, &measured, &planned, &jacobian, &y);
   return y;
 }
 
 void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, bool left_loaded,
                             bool right_loaded, multibody::Data* measured, multibody::Data* planned,
-                            Eigen::VectorXd* y) const {
+                            Eigen::MatrixXd* jacobian, Eigen::VectorXd* y) const {
   if (!left_loaded && !right_loaded) return;  // in the air: nothing to stand on
   const int nq = model_->nq();
   const double omega = std::sqrt(-model_->gravity().z() / options_.com_height);
@@ -129,6 +160,26 @@ void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::Vecto
   const double tilt_y = std::clamp(-options_.pitch_gain * e_forward, -options_.max_pitch, options_.max_pitch);
   const double tilt_x = std::clamp(options_.roll_gain * e_left, -options_.max_roll, options_.max_roll);
   const bool loaded[2] = {left_loaded, right_loaded};
+  // The capture points ran the kinematics of both configurations, so the soles' poses are in the Data already.
+  for (int leg = 0; leg < 2 && options_.foothold_gain > 0.0; ++leg) {
+    if (!loaded[leg]) continue;
+    const multibody::Pose X_measured = multibody::FramePose(*model_, *measured, sole_frame_[leg]);
+    const multibody::Pose X_planned = multibody::FramePose(*model_, *planned, sole_frame_[leg]);
+    // [rotation; translation] of the sole in world axes with the base held: horizontal only (the sole's height and
+    // tilt are the ground's; re-posing the yaw too measured more slips, docs/walk.md).
+    Eigen::Matrix<double, 6, 1> move = Eigen::Matrix<double, 6, 1>::Zero();
+    move.segment<2>(3) = options_.foothold_gain * (X_measured.translation() - X_planned.translation()).head<2>();
+    multibody::FrameJacobian(*model_, *planned, sole_frame_[leg], multibody::ReferenceFrame::kWorldAligned, *jacobian);
+    Eigen::Matrix<double, 6, 6> leg_jacobian;
+    for (int c = 0; c < 6; ++c) leg_jacobian.col(c) = jacobian->col(leg_v_[leg][c]);
+    // Damped, as a bent leg's Jacobian is well conditioned but a straight knee's is not.
+    constexpr double kDamping = 1e-6;
+    const Eigen::Matrix<double, 6, 1> dq =
+        (leg_jacobian.transpose() * leg_jacobian + kDamping * Eigen::Matrix<double, 6, 6>::Identity())
+            .ldlt()
+            .solve(leg_jacobian.transpose() * move);
+    for (int c = 0; c < 6; ++c) (*y)[leg_q_[leg][c]] += dq[c];
+  }
   for (int leg = 0; leg < 2; ++leg) {
     if (!loaded[leg]) continue;
     (*y)[pitch_[leg].q] -= tilt_y / pitch_[leg].sign;

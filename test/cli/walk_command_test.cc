@@ -118,6 +118,7 @@ TEST_F(WalkCommandTest, WritesConsistentOutputsAndTheSameBytesTwice) {
     EXPECT_THAT(slip.at("foot").get<std::string>(), ::testing::AnyOf("left", "right"));
   }
   EXPECT_GE(walk.at("goal").at("distance").get<double>(), 0.0);
+  EXPECT_GE(walk.at("goal").at("last_stance_distance").get<double>(), 0.0);
   // The same arguments give the same bytes.
   ASSERT_EQ(RunCairnStreams(Walk("--stabilizer preview --out " + b.string())).exit_code, 0);
   for (const char* name : kFiles) EXPECT_EQ(Slurp(a / name), Slurp(b / name)) << name;

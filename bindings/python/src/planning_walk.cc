@@ -51,6 +51,10 @@ void DefinePlanningWalk(py::module_ m) {
       .def_readwrite("max_roll", &BalanceFeedbackOptions::max_roll, "Largest roll offset, rad, in [0, 0.5].")
       .def_readwrite("com_height", &BalanceFeedbackOptions::com_height,
                      "Pendulum height of the capture point, m, in (0.1, 3].")
+      .def_readwrite("foothold_gain", &BalanceFeedbackOptions::foothold_gain,
+                     "Share of a loaded foot's x-y placement error written into its leg's reference, in [0, 1].")
+      .def_readwrite("left_sole", &BalanceFeedbackOptions::left_sole, "Frame name.")
+      .def_readwrite("right_sole", &BalanceFeedbackOptions::right_sole, "Frame name.")
       .def_readwrite("left_ankle_pitch", &BalanceFeedbackOptions::left_ankle_pitch, "Joint name.")
       .def_readwrite("left_ankle_roll", &BalanceFeedbackOptions::left_ankle_roll, "Joint name.")
       .def_readwrite("right_ankle_pitch", &BalanceFeedbackOptions::right_ankle_pitch, "Joint name.")

@@ -97,8 +97,10 @@ def standing(robot):
 
 
 def test_balance_feedback_tilts_only_the_loaded_ankles_against_the_capture_point(robot):
-    feedback = planning.BalanceFeedback(robot)
-    assert feedback.options().pitch_gain == pytest.approx(0.8)
+    assert planning.BalanceFeedback(robot).options().pitch_gain == pytest.approx(0.8)
+    options = planning.BalanceFeedbackOptions()
+    options.foothold_gain = 0.0  # the soles moved with the robot: only the tilt here
+    feedback = planning.BalanceFeedback(robot, options)
     planned = standing(robot)
     assert np.array_equal(feedback.Correct(planned, planned, True, True), planned)
     measured = planned.copy()
@@ -110,6 +112,24 @@ def test_balance_feedback_tilts_only_the_loaded_ankles_against_the_capture_point
     assert abs(corrected[left_pitch] - planned[left_pitch]) == pytest.approx(0.8 * 0.05)
     # In the air nothing changes.
     assert np.array_equal(feedback.Correct(planned, measured, False, False), planned)
+
+
+def test_balance_feedback_writes_a_loaded_foots_placement_into_its_leg(robot):
+    options = planning.BalanceFeedbackOptions()
+    options.pitch_gain = options.roll_gain = 0.0
+    assert options.foothold_gain == pytest.approx(0.5)
+    feedback = planning.BalanceFeedback(robot, options)
+    planned = standing(robot)
+    measured = planned.copy()
+    measured[0] += 0.04  # the loaded left foot stands 4 cm ahead of where the reference puts it
+    corrected = feedback.Correct(planned, measured, True, False)
+    before, after = mb.Data(robot), mb.Data(robot)
+    mb.ForwardKinematics(robot, before, planned[:robot.nq()])
+    mb.ForwardKinematics(robot, after, corrected[:robot.nq()])
+    sole = robot.GetBodyIndex("l_sole")
+    moved = after.X_world[sole].translation() - before.X_world[sole].translation()
+    np.testing.assert_allclose(moved, [0.02, 0.0, 0.0], atol=5e-4)  # half of it, at the default gain
+    assert np.array_equal(corrected[:7], planned[:7])  # the base keeps the plan
 
 
 def test_balance_feedback_refuses_bad_options_and_sizes(robot):

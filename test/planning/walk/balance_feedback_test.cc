@@ -61,10 +61,13 @@ TEST(BalanceFeedbackTest, NoErrorLeavesTheReferenceAsItIs) {
 
 // The measured COM 5 cm ahead of the planned one (the whole robot shifted forward): each loaded leg tilts back by
 // pitch_gain * 5 cm. With the base held, that shows as the sole pitching toes-down by that angle, so once the sole
-// is flat on the ground again the body leans back.
+// is flat on the ground again the body leans back. (The soles moved with the robot; the foothold term, tested
+// below, is off here.)
 TEST(BalanceFeedbackTest, ACapturePointAheadTiltsTheLoadedLegsBack) {
   const auto model = test::Humanoid();
-  const BalanceFeedback feedback(model);
+  BalanceFeedbackOptions options;
+  options.foothold_gain = 0.0;
+  const BalanceFeedback feedback(model, options);
   const Eigen::VectorXd planned = Standing(*model);
   Eigen::VectorXd measured = planned;
   measured[0] += 0.05;
@@ -126,9 +129,52 @@ TEST(BalanceFeedbackTest, TheErrorIsReadInTheBasesHeadingFrame) {
   EXPECT_GT((corrected - planned).norm(), 0.0);
 }
 
+// A loaded foot that stands 4 cm ahead and 2 cm left of where the reference puts it (here: the whole robot shifted,
+// the base held at the plan in the reference): its leg's reference moves the sole by foothold_gain times that
+// offset relative to the planned base, keeping the sole's orientation and height, so the legs agree with where
+// the feet are. A swing leg keeps its reference.
+TEST(BalanceFeedbackTest, ALoadedFootsPlacementErrorIsWrittenIntoItsLeg) {
+  const auto model = test::Humanoid();
+  BalanceFeedbackOptions options;
+  options.pitch_gain = 0.0;
+  options.roll_gain = 0.0;
+  options.foothold_gain = 0.5;
+  const BalanceFeedback feedback(model, options);
+  const Eigen::VectorXd planned = Standing(*model);
+  Eigen::VectorXd measured = planned;
+  measured[0] += 0.04;
+  measured[1] += 0.02;
+  const Eigen::VectorXd corrected = feedback.Correct(planned, measured, true, false);
+  multibody::Data before(*model), after(*model);
+  multibody::ForwardKinematics(*model, before, planned.head(model->nq()));
+  multibody::ForwardKinematics(*model, after, corrected.head(model->nq()));
+  const auto sole = [&](const multibody::Data& data, const char* name) {
+    return data.X_world[model->GetBodyIndex(name)];
+  };
+  const Eigen::Vector3d moved = sole(after, "l_sole").translation() - sole(before, "l_sole").translation();
+  // One linear step of the leg's inverse kinematics: exact to first order in the 4.5 cm offset.
+  EXPECT_NEAR(moved.x(), 0.02, 5e-4);
+  EXPECT_NEAR(moved.y(), 0.01, 5e-4);
+  EXPECT_NEAR(moved.z(), 0.0, 5e-4);
+  EXPECT_TRUE(sole(after, "l_sole").rotation().isApprox(sole(before, "l_sole").rotation(), 1e-3));
+  EXPECT_TRUE(sole(after, "r_sole").translation().isApprox(sole(before, "r_sole").translation(), 1e-12));
+  // Only the left leg's joints changed; the base and the rest of the robot keep the plan.
+  EXPECT_EQ((corrected - planned).head(7).norm(), 0.0);
+  EXPECT_EQ(feedback.Correct(planned, planned, true, true), planned);
+
+  options.foothold_gain = 1.5;
+  CAIRN_EXPECT_THROWS_WITH(BalanceFeedback(model, options), std::invalid_argument, "foothold_gain 1.5 must be in [0, 1]");
+  options.foothold_gain = 0.5;
+  options.left_sole = "l_foot_plate";
+  CAIRN_EXPECT_THROWS_WITH(BalanceFeedback(model, options), std::invalid_argument, "no frame 'l_foot_plate'",
+                           "name the sole frames");
+}
+
 TEST(BalanceFeedbackTest, ALargeErrorIsClampedAndARobotInTheAirIsLeftAlone) {
   const auto model = test::Humanoid();
-  const BalanceFeedback feedback(model);
+  BalanceFeedbackOptions options;
+  options.foothold_gain = 0.0;
+  const BalanceFeedback feedback(model, options);
   const Eigen::VectorXd planned = Standing(*model);
   Eigen::VectorXd measured = planned;
   measured[0] += 3.0;

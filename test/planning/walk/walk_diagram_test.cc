@@ -121,11 +121,12 @@ double SoleDistance(const WalkSetup& setup, const WalkRecord& record, const Stan
                   distance(setup.plant.sole_bodies.at(1), stance.right));
 }
 
-// The plant's verdict on the flat 3 m plan (examples/scenarios/flat.yaml, 15 steps of about 1.2 s): played open loop
-// the stabilised reference falls in the second step; with the capture-point feedback the robot stays up several
-// seconds longer. (Measured 2026-12-04: open loop falls at 3.3 s, closed loop at 10.4 s of 18.2 s, the pelvis
-// tilting; issue 16 asks for the whole walk to within 5 cm of the goal, which is not reached yet: docs/walk.md.)
-TEST(WalkDiagramTest, TheFeedbackKeepsTheFlatPlanUpLongerThanOpenLoop) {
+// The plant's verdict on the flat 3 m plan (examples/scenarios/flat.yaml, 15 steps of about 1.2 s, issue 16's first
+// behaviour): stabilised and with the balance feedback the robot walks the whole plan without a fall and its soles
+// end within 5 cm of the plan's last stance, so within the scenario's goal tolerance (the plan itself ends 10 cm
+// short of the goal, inside that tolerance). Unstabilised it falls in its second step; played open loop (no
+// feedback) the stabilised reference falls too.
+TEST(WalkDiagramTest, TheStabilisedFlatPlanIsWalkedToItsEndAndTheUnstabilisedOneFalls) {
   const FootstepScenario scenario =
       FootstepScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/flat.yaml");
   WalkSetup setup = SetupFor(scenario);
@@ -133,18 +134,21 @@ TEST(WalkDiagramTest, TheFeedbackKeepsTheFlatPlanUpLongerThanOpenLoop) {
   setup.planner.search.max_expansions = 20000;
   WalkRunOptions options;
   options.settle_time = 0.5;
-  const WalkRecord closed_loop = RunWalk(BuildWalkDiagram(setup), options);
-  ASSERT_TRUE(closed_loop.start.ready) << closed_loop.start.reason;
-  ASSERT_GE(closed_loop.plan.steps.size(), 10u);
+  const WalkRecord walked = RunWalk(BuildWalkDiagram(setup), options);
+  ASSERT_TRUE(walked.start.ready) << walked.start.reason;
+  ASSERT_GE(walked.plan.steps.size(), 10u);
+  EXPECT_FALSE(walked.fell) << walked.fall_reason << " at " << walked.duration << " s";
+  const Stance last = walked.plan.StanceAfter(static_cast<int>(walked.plan.steps.size()) - 1);
+  EXPECT_LT(SoleDistance(setup, walked, last), 0.05);
+  EXPECT_LE(SoleDistance(setup, walked, scenario.goal().stance), scenario.goal().position_tolerance);
+
+  WalkSetup unstabilised = setup;
+  unstabilised.stabilizer.method = "none";
+  const WalkRecord none = RunWalk(BuildWalkDiagram(unstabilised), options);
+  EXPECT_TRUE(none.fell) << "the unstabilised flat plan was walked";
   setup.feedback = false;
   const WalkRecord open_loop = RunWalk(BuildWalkDiagram(setup), options);
   EXPECT_TRUE(open_loop.fell) << "the flat plan was walked open loop";
-  EXPECT_GT(closed_loop.duration, open_loop.duration + 3.0)
-      << "closed loop " << closed_loop.fall_reason << " at " << closed_loop.duration << " s";
-  if (!closed_loop.fell) {
-    const Stance last = closed_loop.plan.StanceAfter(static_cast<int>(closed_loop.plan.steps.size()) - 1);
-    EXPECT_LT(SoleDistance(setup, closed_loop, last), 0.1);
-  }
 }
 
 TEST(WalkDiagramTest, RefusesAnIncompleteSetupAnEmptyDiagramAndAForeignSimulator) {
