@@ -52,6 +52,7 @@ struct WalkArguments {
   double settle_time = 1.0;
   double step = 1e-3;
   bool open_loop = false;
+  bool no_refine = false;
   bool json = false;
 };
 
@@ -225,6 +226,7 @@ int Run(const WalkArguments& args) {
   WalkSetup setup = WalkSetupFromScenario(scenario, oracle, walking_model, objective, robot, controller);
   setup.stabilizer.method = args.stabilizer;
   setup.feedback = !args.open_loop;
+  if (args.no_refine) setup.refine_model = nullptr;
   setup.plant.bullet.time_step = args.step;
   setup.plant.drives = multibody::LoadJointDrives(*robot, walking);
   setup.plant.stop_on_fall = true;
@@ -331,6 +333,8 @@ void RegisterWalkCommand(CommandRegistry* registry) {
                                  "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
                   app.add_flag("--open-loop", args->open_loop,
                                "Play the stabilised reference without the capture-point feedback (BalanceFeedback)");
+                  app.add_flag("--no-refine", args->no_refine,
+                               "Keep the oracle table's step parameters (skip the SLSQP refinement of each step)");
                   app.add_flag("--json", args->json, "Print walk.json and the stages' wall times as one JSON object");
                   return [args] { return Run(*args); };
                 });

@@ -124,6 +124,20 @@ TEST_F(WalkCommandTest, WritesConsistentOutputsAndTheSameBytesTwice) {
   for (const char* name : kFiles) EXPECT_EQ(Slurp(a / name), Slurp(b / name)) << name;
 }
 
+// --no-refine keeps the oracle table's step parameters, which the refinement would lower the predicted energy of
+// (as `cairn plan --no-refine`).
+TEST_F(WalkCommandTest, NoRefineKeepsTheTablesStepParameters) {
+  const CairnStreams table = RunCairnStreams(Walk("--no-refine --open-loop --json"));
+  const CairnStreams refined = RunCairnStreams(Walk("--open-loop --json"));
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  ASSERT_EQ(refined.exit_code, 0) << refined.err;
+  const auto plan_table = nlohmann::json::parse(table.out).at("plan");
+  const auto plan_refined = nlohmann::json::parse(refined.out).at("plan");
+  ASSERT_TRUE(plan_table.at("found").get<bool>() && plan_refined.at("found").get<bool>());
+  EXPECT_EQ(plan_table.at("steps"), plan_refined.at("steps"));
+  EXPECT_GT(plan_table.at("energy_J").get<double>(), plan_refined.at("energy_J").get<double>());
+}
+
 // The plant's verdict on the same plan played open loop: unstabilised it falls in its first steps; stabilised it
 // stays up much longer (measured 2026-12-02: none falls at 1.9 s, fft at 3.5 s of the 4.2 s plan; docs/walk.md).
 TEST_F(WalkCommandTest, TheUnstabilisedWalkFallsFirst) {
