@@ -144,8 +144,9 @@ void Register() {
   const std::vector<Configuration> configurations = {
       {"gauss-newton", 0, 0.0}, {"exact", 0, 0.0}, {"limited-memory", 0, 0.0}, {"gauss-newton", 2, 0.0},
       {"exact", 2, 0.0},        {"exact", 2, 0.1}, {"exact", 2, 1.0},          {"exact", 2, 10.0},
-      {"exact", 0, 1.0}};
-  for (const std::string name : {"flat", "ice_narrow_012"}) {
+      {"exact", 0, 1.0},        {"limited-memory", 2, 0.0}};
+  // The flat 3 m plan and the thesis' three ice plans (2.4.2: mu 0.06 on a narrow and a wide patch, mu 0.12).
+  for (const std::string name : {"flat", "ice_narrow_006", "ice_narrow_012", "ice_wide_006"}) {
     for (const Configuration& c : configurations) {
       const std::string label = "BM_WholeBody/" + name + "/" + c.hessian + "/window:" + std::to_string(c.window) +
                                 "/rotation_weight:" + cairn::FormatShort(c.rotation_weight);

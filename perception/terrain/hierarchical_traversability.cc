@@ -153,8 +153,9 @@ void HierarchicalTraversability::Compute(GridMap* map) const {
         case Source::kGeometry: {
           const double ev = elevation_variance != nullptr ? (*elevation_variance)[s] : nan;
           // A cell of the filter's window without a height of its own has no variance: fall back to the constant.
-          t_variance[s] = ev > 0.0 && std::isfinite(ev) ? roughness_gain * roughness_gain * ev
-                                                         : options_.geometry_variance;
+          t_variance[s] = ev > 0.0 && std::isfinite(ev)
+                              ? std::max(options_.geometry_variance, roughness_gain * roughness_gain * ev)
+                              : options_.geometry_variance;
           break;
         }
         case Source::kUnknown: t_variance[s] = nan; break;

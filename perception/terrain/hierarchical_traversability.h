@@ -43,9 +43,12 @@ class HierarchicalTraversability {
     /// the smaller because touch identifies the ground; the sensor model for geometry).
     double probe_variance{0.0025};
     double semantic_variance{0.04};
-    /// Geometry where the map has no "elevation_variance" layer. With it, the variance is propagated from the
-    /// heights' to first order through the roughness term: height noise of standard deviation sigma adds about
-    /// sigma to a window's roughness, so var(t) = (roughness_weight / critical_roughness)^2 * elevation_variance.
+    /// Geometry: at least this, more where the heights are uncertain. With an "elevation_variance" layer the
+    /// variance is propagated from the heights' to first order through the roughness term (height noise of
+    /// standard deviation sigma adds about sigma to a window's roughness): var(t) = max(geometry_variance,
+    /// (roughness_weight / critical_roughness)^2 * elevation_variance). The floor keeps a well-fused height map
+    /// (whose posterior variance shrinks with every point) from outweighing a probe: the geometric rule is a
+    /// model of traversability, not a measurement of it, whatever the heights' precision.
     double geometry_variance{0.01};
     /// Threads (0 = one per core).
     int num_threads{0};

@@ -105,8 +105,9 @@ void SemanticFusion::Integrate(const Eigen::Matrix3Xd& points_W, const Eigen::Ma
                                 FormatShort(static_cast<long>(points_W.cols())) + " points");
   }
   const int n = static_cast<int>(points_W.cols());
-  // A class's labels are summed: a little above 1 is rounding in the segmenter, more is not a distribution.
-  constexpr double kSumTolerance = 1e-6;
+  // A class's labels are summed: a little above 1 is the rounding of a float32 segmenter's many outputs, more is
+  // not a distribution.
+  constexpr double kSumTolerance = 1e-5;
   double class_sum[kMaxClasses];
   for (int p = 0; p < n; ++p) {
     std::fill(class_sum, class_sum + k, 0.0);
@@ -123,8 +124,8 @@ void SemanticFusion::Integrate(const Eigen::Matrix3Xd& points_W, const Eigen::Ma
     for (int c = 0; c < k; ++c) {
       if (class_sum[c] > 1.0 + kSumTolerance) {
         throw std::invalid_argument("SemanticFusion: the labels of class '" + options_.classes[c] + "' sum to " +
-                                    FormatShort(class_sum[c]) + " at point " + FormatShort(p) +
-                                    "; a segmenter's probabilities sum to at most 1");
+                                    FormatShort(class_sum[c]) + " (1 + " + FormatShort(class_sum[c] - 1.0) +
+                                    ") at point " + FormatShort(p) + "; a segmenter's probabilities sum to at most 1");
       }
     }
   }

@@ -1,5 +1,8 @@
 #include "cairn/perception/terrain/traversability_analyzer.h"
 
+#include <algorithm>
+#include <vector>
+
 #include "cairn/perception/terrain/kalman_cell_update.h"
 
 namespace cairn::perception {
@@ -37,12 +40,18 @@ void TraversabilityAnalyzer::CalcMap(const GridMap& map, const std::vector<Probe
   const int c = out->LayerIndex("collapsibility");
   const int c_variance = out->LayerIndex("collapsibility_variance");
   const double variance = rule_.options().probe_variance;
+  std::vector<int> cells;
   for (const ProbedRegion& probe : probes) {
+    // One probe is one measurement of each cell it covers, however many of its points fall in the cell.
+    cells.clear();
     for (const Eigen::Vector2d& p : probe.points) {
       Eigen::Vector2i cell;
-      if (!out->CellOf(p, &cell)) continue;
-      KalmanCellUpdate(probe.collapsibility, variance, &out->at(c, cell.x(), cell.y()),
-                       &out->at(c_variance, cell.x(), cell.y()));
+      if (out->CellOf(p, &cell)) cells.push_back(out->StorageIndex(cell.x(), cell.y()));
+    }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    for (const int s : cells) {
+      KalmanCellUpdate(probe.collapsibility, variance, &out->layer_data(c)[s], &out->layer_data(c_variance)[s]);
     }
   }
   rule_.Compute(out);

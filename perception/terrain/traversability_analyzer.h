@@ -15,8 +15,8 @@
 namespace cairn::perception {
 
 /// Fuses the probes' collapsibility into the "collapsibility" layer of a copy of the input map (each probed
-/// region's points mark their cells; probes in their order, by the Kalman rule of eq. 1 at the rule's
-/// probe_variance, so a cell probed twice holds the variance-weighted mean) and computes "traversability" and
+/// region's points mark their cells, each cell once per probe; probes in their order, by the Kalman rule of eq. 1
+/// at the rule's probe_variance, so a cell probed twice holds the mean of the two with half the variance) and computes "traversability" and
 /// its measurement variance with HierarchicalTraversability (Algorithm 1). A per-cell rule over the map, cheap
 /// enough for an output. The map is the mapper's: fused in place over time when it is fixed in the world;
 /// register a robot-centred one (ElevationMapper's follow_sensor) into a fixed global map with MapRegistration

@@ -68,10 +68,10 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
   };
   CheckRange("foothold_gain", options_.foothold_gain, 0.0, 1.0);
   const std::string* soles[2] = {&options_.left_sole, &options_.right_sole};
-  for (int side = 0; side < 2; ++side) {
+  for (int side = 0; side < 2 && options_.foothold_gain > 0.0; ++side) {
     if (!model_->HasFrame(*soles[side])) {
       throw std::invalid_argument("BalanceFeedback: model '" + model_->name() + "' has no frame '" + *soles[side] +
-                                  "'; name the sole frames in BalanceFeedbackOptions");
+                                  "'; name the sole frames in BalanceFeedbackOptions, or set foothold_gain 0");
     }
     sole_frame_[side] = model_->GetFrameIndex(*soles[side]);
     int joints = 0;
@@ -88,7 +88,8 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
     }
     if (joints != 6) {
       throw std::invalid_argument("BalanceFeedback: the sole frame '" + *soles[side] +
-                                  "' is not on a leg of six one-axis joints below the floating base");
+                                  "' is not on a leg of six one-axis joints below the floating base; name the sole "
+                                  "frames of six-joint legs, or set foothold_gain 0");
     }
   }
   pitch_[0] = ankle(options_.left_ankle_pitch, 1);

@@ -15,7 +15,8 @@ namespace cairn::planning {
 struct BalanceFeedbackOptions {
   /// Forward and sideways gains, rad of leg tilt per m of capture-point error, in [0, 1000] (0 turns the axis off).
   /// In the plant, pitch gains in [0.6, 1] with roll gains in [0.5, 2] walk a slow four-step plan that falls open loop
-  /// and with a pitch gain of 0.3 or less (docs/walk.md, "Balance feedback"); the defaults sit in the middle.
+  /// and with a pitch gain of 0.3 or less (docs/walk.md, "Balance feedback"; measured before the foothold term);
+  /// the defaults sit in the middle.
   double pitch_gain{0.8};
   double roll_gain{1.0};
   /// Largest ankle offsets, rad, in [0, 0.5].
@@ -28,9 +29,10 @@ struct BalanceFeedbackOptions {
   /// it relative to the planned base; a foot that landed elsewhere then fights the other foot in double support
   /// (both cannot be where their references say) and the base follows the misplaced foot. At 1 the loaded legs'
   /// references place the soles where they are, so the legs agree and the base tracks the plan. On the flat 3 m
-  /// plan gains 0.3-0.85 walk to the end and 0.2 or less fall (docs/walk.md); 0 turns it off.
+  /// plan gains 0.3-0.5 walk to the end and 0.2 or less fall (docs/walk.md); 0 turns it off.
   double foothold_gain{0.5};
-  /// The sole frames of the left and the right leg (each on a chain of six joints below the floating base).
+  /// The sole frames of the left and the right leg (each on a chain of six joints below the floating base); needed
+  /// only with a foothold_gain above 0.
   std::string left_sole{"l_sole"};
   std::string right_sole{"r_sole"};
   /// The ankle joints of the left and the right leg (revolute; pitch about the joints' +-y, roll about +-x).
@@ -51,19 +53,25 @@ struct BalanceFeedbackOptions {
 ///
 /// With the stiff PD drive and the sole flat on the ground the offset mostly re-poses the leg (the COM moves
 /// h * tilt), with the ankle torque shifting the ZMP the same way. Swing legs are left alone (a tilted swing foot
-/// would stub its toe). The feedback is a cheap calculation on the current inputs, so it is an output.
+/// would stub its toe).
+///
+/// Each loaded leg also takes foothold_gain times its sole's horizontal placement error (the plant's sole against
+/// the reference's) into its six joint references, by one damped step of the leg's inverse kinematics with the base
+/// held, so that two feet that did not land where planned do not fight each other in double support. The feedback
+/// is a cheap calculation on the current inputs (no allocation), so it is an output.
 ///
 /// | port | type | meaning |
 /// |---|---|---|
 /// | input `reference` | vector nq + nv | the planned [q; v] (StabilizedReferencePlayer's `reference`) |
 /// | input `state` | vector nq + nv | the plant's measured [q; v] (HumanoidPlant's `state`) |
 /// | input `contacts` | std::vector<multibody::SoleState> | the plant's left and right sole (HumanoidPlant's `contacts`): which carry load |
-/// | output `reference` | vector nq + nv | `reference` with the loaded legs' ankle offsets |
+/// | output `reference` | vector nq + nv | `reference` with the loaded legs' ankle offsets and foothold corrections |
 class BalanceFeedback final : public systems::LeafSystem {
  public:
   /// Throws std::invalid_argument for a null model, one without a floating base or without gravity along -z, an
-  /// ankle joint that is missing or not revolute about its x (roll) or y (pitch) axis, and options out of range
-  /// (naming the option and its range).
+  /// ankle joint that is missing or not revolute about its x (roll) or y (pitch) axis, options out of range
+  /// (naming the option and its range), and with a foothold_gain above 0 a sole frame that is missing or not on a
+  /// six-joint leg below the floating base.
   BalanceFeedback(std::shared_ptr<const multibody::Model> model, const BalanceFeedbackOptions& options = {});
 
   const systems::InputPort& get_reference_input_port() const { return GetInputPort("reference"); }

@@ -71,7 +71,7 @@ TEST(HierarchicalTraversabilityTest, EachCellsVarianceComesFromTheLevelThatSetIt
   const int ev = map.AddLayer("elevation_variance");
   map.at(c, 0, 0) = 0.4;       // probed
   map.at(plants, 1, 0) = 0.9;  // plants
-  map.at(ev, 2, 0) = 1e-4;     // geometry with a sensor variance
+  map.at(ev, 2, 0) = 1e-3;     // geometry with uncertain heights
   // cell 3: geometry without a height of its own (e.g. filled by the filter's window)
   map.at(roughness, 4, 0) = NAN;  // nothing known
   rule.Compute(&map);
@@ -82,8 +82,11 @@ TEST(HierarchicalTraversabilityTest, EachCellsVarianceComesFromTheLevelThatSetIt
   EXPECT_DOUBLE_EQ(map.at(t, 1, 0), 0.8);
   EXPECT_DOUBLE_EQ(map.at(tv, 1, 0), rule.options().semantic_variance);
   EXPECT_DOUBLE_EQ(map.at(t, 2, 0), 0.9);                 // 1 - 0.5 * 0.01 / 0.05
-  EXPECT_NEAR(map.at(tv, 2, 0), 100.0 * 1e-4, 1e-15);     // (0.5 / 0.05)^2 * 1e-4
+  EXPECT_NEAR(map.at(tv, 2, 0), 100.0 * 1e-3, 1e-15);     // (0.5 / 0.05)^2 * 1e-3
   EXPECT_DOUBLE_EQ(map.at(tv, 3, 0), rule.options().geometry_variance);
+  map.at(ev, 2, 0) = 1e-6;  // well fused: the floor
+  rule.Compute(&map);
+  EXPECT_DOUBLE_EQ(map.at(tv, 2, 0), rule.options().geometry_variance);
   EXPECT_TRUE(std::isnan(map.at(t, 4, 0)));
   EXPECT_TRUE(std::isnan(map.at(tv, 4, 0)));
   EXPECT_LT(rule.options().probe_variance, rule.options().semantic_variance);

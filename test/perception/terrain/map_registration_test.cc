@@ -68,6 +68,26 @@ TEST(MapRegistrationTest, ProbingOutweighsSemanticsInTheRegisteredTraversability
   EXPECT_NEAR(seen.ValueAt("traversability", cell), expected, 1e-12);
   EXPECT_LT(seen.ValueAt("traversability", cell), 0.5);  // semi-untraversable after one probe
 
+  // Flat ground seen precisely many times (geometry: t = 1), then probed soft: the probe still moves the cell most
+  // of the way, since the geometric rule's variance has a floor above the probe's.
+  GridMap flat(Eigen::Vector2i(1, 1), 0.1, Eigen::Vector2d::Zero());
+  registration.AddLayers(&flat);
+  const auto geometric = [&](double collapsibility) {
+    GridMap local(Eigen::Vector2i(1, 1), 0.1, Eigen::Vector2d::Zero());
+    local.AddLayer("slope", 0.0);
+    local.AddLayer("roughness", 0.0);
+    local.AddLayer("elevation_variance", 1e-7);  // thousands of fused points
+    local.AddLayer("collapsibility", collapsibility);
+    rule.Compute(&local);
+    return local;
+  };
+  registration.Register(geometric(NAN), &flat);
+  EXPECT_DOUBLE_EQ(flat.ValueAt("traversability", cell), 1.0);
+  registration.Register(geometric(0.85), &flat);
+  const double vg = rule.options().geometry_variance;
+  EXPECT_NEAR(flat.ValueAt("traversability", cell), (vp * 1.0 + vg * 0.15) / (vg + vp), 1e-12);
+  EXPECT_LT(flat.ValueAt("traversability", cell), 0.5);
+
   GridMap probed(Eigen::Vector2i(1, 1), 0.1, Eigen::Vector2d::Zero());
   registration.AddLayers(&probed);
   registration.Register(local_map(0.85), &probed);

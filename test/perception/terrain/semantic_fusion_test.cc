@@ -147,7 +147,10 @@ TEST(SemanticFusionTest, RejectsBadLabelMaps) {
   Eigen::MatrixXd p(4, 1);
   p << 0.0, 0.7, 0.6, 0.0;
   CAIRN_EXPECT_THROWS_WITH(fusion.Integrate(points, p, &map), std::invalid_argument,
-                           "the labels of class 'plants' sum to 1.3 at point 0");
+                           "the labels of class 'plants' sum to 1.3 (1 + 0.3) at point 0");
+  p << 0.0, 0.5, 0.5 + 4e-6, 0.0;  // float rounding above 1: accepted, the class's probability is 1
+  fusion.Integrate(points, p, &map);
+  EXPECT_DOUBLE_EQ(map.ValueAt("semantic_plants", Eigen::Vector2d(0.5, 0.5)), 1.0);
   CAIRN_EXPECT_THROWS_WITH(fusion.Integrate(points, Eigen::MatrixXd::Zero(2, 1), &map), std::invalid_argument,
                            "expected 4 input labels x 1 points");
   p << 0.0, 0.3, -0.1, 0.0;

@@ -123,6 +123,26 @@ TEST(TerrainSystemsTest, ARobotCentredMapMovesWithTheSensorAndRegistersIntoAGlob
   EXPECT_TRUE(std::isnan(global.ValueAt("elevation", Eigen::Vector2d(3.45, 0.05))));  // never in a local map
 }
 
+// Probes are measurements fused by eq. 1 (seed 001 §4.2), not overwrites: a cell probed at C = 0.7 and then at
+// C = 0.3 holds 0.5 with half the probe variance; a probe with several points in one cell counts once there.
+TEST(TerrainSystemsTest, TheAnalyzerFusesProbesOfACell) {
+  GridMap map(Eigen::Vector2i(4, 4), 0.1, Eigen::Vector2d::Zero());
+  map.AddLayer("slope", 0.0);
+  map.AddLayer("roughness", 0.0);
+  const TraversabilityAnalyzer analyzer;
+  GridMap out(Eigen::Vector2i(1, 1), 1.0, Eigen::Vector2d::Zero());
+  const Eigen::Vector2d cell(0.05, 0.05), other(-0.05, 0.05);
+  analyzer.CalcMap(map, {{{cell, Eigen::Vector2d(0.06, 0.04), other}, 0.7}, {{cell}, 0.3}}, &out);
+  const double vp = HierarchicalTraversability().options().probe_variance;
+  EXPECT_NEAR(out.ValueAt("collapsibility", cell), 0.5, 1e-12);
+  EXPECT_NEAR(out.ValueAt("collapsibility_variance", cell), vp / 2, 1e-15);
+  EXPECT_NEAR(out.ValueAt("traversability", cell), 0.5, 1e-12);
+  EXPECT_NEAR(out.ValueAt("collapsibility", other), 0.7, 1e-12);
+  EXPECT_NEAR(out.ValueAt("collapsibility_variance", other), vp, 1e-15);
+  EXPECT_NEAR(out.ValueAt("traversability_variance", cell), vp, 1e-15);  // a probed cell: the probe's variance
+  EXPECT_TRUE(std::isnan(out.ValueAt("collapsibility", Eigen::Vector2d(0.15, 0.15))));
+}
+
 TEST(TerrainSystemsTest, ProbeControllerAveragesTheProbesForce) {
   ProbeController controller(CollapsibilityEstimator::Options{100.0, 5}, 0.01);
   auto context = controller.CreateDefaultContext();

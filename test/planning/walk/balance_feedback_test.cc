@@ -167,7 +167,13 @@ TEST(BalanceFeedbackTest, ALoadedFootsPlacementErrorIsWrittenIntoItsLeg) {
   options.foothold_gain = 0.5;
   options.left_sole = "l_foot_plate";
   CAIRN_EXPECT_THROWS_WITH(BalanceFeedback(model, options), std::invalid_argument, "no frame 'l_foot_plate'",
-                           "name the sole frames");
+                           "name the sole frames", "or set foothold_gain 0");
+  options.left_sole = "head";  // a frame, but not at the end of a leg
+  CAIRN_EXPECT_THROWS_WITH(BalanceFeedback(model, options), std::invalid_argument,
+                           "'head' is not on a leg of six one-axis joints");
+  options.foothold_gain = 0.0;  // the sole frames are needed only with the foothold term
+  options.left_sole = "l_foot_plate";
+  EXPECT_NO_THROW(BalanceFeedback(model, options));
 }
 
 TEST(BalanceFeedbackTest, ALargeErrorIsClampedAndARobotInTheAirIsLeftAlone) {
@@ -251,9 +257,9 @@ TEST(BalanceFeedbackTest, RefusesBadModelsOptionsAndSizes) {
 
 // Four straight 0.2 m steps at the slow timing the footstep planner chooses for energy (0.35 s double support,
 // 0.9 s swing): open loop the drift grows through each long single support and the robot falls; with the
-// capture-point feedback it walks to the footholds. (Measured 2026-12-04 over gains: every pitch gain in [0.6, 1]
-// with a roll gain in [0.5, 2] walks it, 0.3 or less falls; the soles end 3-4 cm ahead and 2-6 cm to the right of
-// their footholds: the feedback holds the COM to the reference, not the feet to their footholds.)
+// capture-point feedback it walks to the footholds. (Measured 2026-12-04 over the tilt gains, before the foothold
+// term existed: every pitch gain in [0.6, 1] with a roll gain in [0.5, 2] walks it, 0.3 or less falls; the soles
+// ended 3-4 cm ahead and 2-6 cm to the right of their footholds.)
 TEST(BalanceFeedbackTest, TheFeedbackWalksASlowPlanThatFallsOpenLoop) {
   const auto model = test::Humanoid();
   FootstepPlan plan = test::StraightPlan(4, 0.2);
