@@ -63,7 +63,9 @@ void DefinePlanningTrajectory(py::module_ m) {
                      "Ipopt's Hessian: 'exact', 'gauss-newton' or 'limited-memory'.")
       .def_readwrite("max_iterations", &TrajectoryOptimizerOptions::max_iterations, "Iteration budget.")
       .def_readwrite("tolerance", &TrajectoryOptimizerOptions::tolerance, "Solver tolerance.")
-      .def_readwrite("window_stances", &TrajectoryOptimizerOptions::window_stances, "0: whole plan.");
+      .def_readwrite("window_stances", &TrajectoryOptimizerOptions::window_stances, "0: whole plan.")
+      .def_readwrite("nominal_pelvis_height", &TrajectoryOptimizerOptions::nominal_pelvis_height,
+                     "Pelvis height of the warm-start posture above the stance's mean foot height, m.");
 
   py::class_<WholeBodyWaypoint>(m, "WholeBodyWaypoint", "One waypoint q_t.")
       .def_readonly("time", &WholeBodyWaypoint::time, "s.")

@@ -61,6 +61,18 @@ def test_the_waist_orientation_smoothness_option_is_exposed_and_validated(model)
         planning.OptimizeWholeBodyTrajectory(model, one_step_plan(), [], options)
 
 
+def test_the_warm_start_height_is_exposed_and_validated(model):
+    # A crouched warm start: the refined high-bar plan solves from 0.7 m where it stalls from 0.8 m (docs/walk.md).
+    options = planning.TrajectoryOptimizerOptions()
+    assert options.nominal_pelvis_height == pytest.approx(0.8)
+    options.nominal_pelvis_height = 0.7
+    trajectory = planning.OptimizeWholeBodyTrajectory(model, one_step_plan(), [], options)
+    assert trajectory.found, trajectory.report.message
+    options.nominal_pelvis_height = 0.0
+    with pytest.raises(ValueError, match="nominal_pelvis_height"):
+        planning.OptimizeWholeBodyTrajectory(model, one_step_plan(), [], options)
+
+
 def test_the_system_solves_in_an_event_and_reports_failures_by_name(model):
     from cairn.systems import Simulator
 
