@@ -20,11 +20,13 @@ int64_t NextSystemId() {
 template <typename Port>
 const Port& FindPort(const std::vector<std::unique_ptr<Port>>& ports, const std::string& name, const char* direction,
                      const System& system) {
-  std::vector<std::string> names;
+  // Found by name in per-step code too (a system's named port accessors): the search allocates nothing; only the
+  // error message collects the names.
   for (const auto& port : ports) {
     if (port->get_name() == name) return *port;
-    names.push_back(port->get_name());
   }
+  std::vector<std::string> names;
+  for (const auto& port : ports) names.push_back(port->get_name());
   std::string message = "System '" + system.GetPathName() + "' has no " + direction + " port named '" + name + "'";
   if (names.empty()) {
     message += "; it has no " + std::string(direction) + " ports.";
