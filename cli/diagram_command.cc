@@ -5,6 +5,9 @@
 
 #include "cairn/multibody/plant/joint_pd_controller.h"
 #include "cairn/multibody/urdf_parser.h"
+#include "cairn/perception/friction/make_material_segmenter.h"
+#include "cairn/planning/run/main_diagram.h"
+#include "cairn/planning/run/scenario_stereo_scene.h"
 #include "cairn/planning/scenarios/footstep_scenario.h"
 #include "cairn/planning/walk/walk_diagram.h"
 #include "choice_option.h"
@@ -20,9 +23,11 @@ namespace {
 
 // The walk diagram of `cairn walk` (planning/walk) for a scenario; its footstep planner needs the oracle, loaded
 // from the cache (or built once).
-planning::WalkDiagram WalkExample(const std::string& scenario_path, const std::string& cache) {
+// With `perceive`, the main diagram of `cairn run` (planning/run): the head camera and perception in front of it.
+planning::WalkDiagram WalkExample(const std::string& scenario_path, const std::string& cache, bool perceive) {
   CheckInputFile("--scenario", scenario_path, "a scenario YAML file");
   const planning::FootstepScenario scenario = planning::FootstepScenario::Load(scenario_path);
+  if (perceive) planning::ScenarioStereoScene(scenario);  // a scenario the camera cannot see fails before the oracle
   const planning::WalkingObjective objective = planning::ParseWalkingObjective(scenario.objective());
   const std::string walking = scenario.robot().empty() ? DataDirectory() + "/robots/cairn_humanoid_walking.yaml"
                                                        : scenario.robot();
@@ -35,8 +40,16 @@ planning::WalkDiagram WalkExample(const std::string& scenario_path, const std::s
       multibody::ParseUrdfFile(DataDirectory() + "/robots/cairn_humanoid.urdf", urdf));
   const auto controller = std::make_shared<const multibody::JointPdController>(
       multibody::JointPdController::Load(*robot, DataDirectory() + "/robots/cairn_humanoid_control.yaml"));
-  return planning::BuildWalkDiagram(
-      planning::WalkSetupFromScenario(scenario, oracle, walking_model, objective, robot, controller));
+  const planning::WalkSetup setup =
+      planning::WalkSetupFromScenario(scenario, oracle, walking_model, objective, robot, controller);
+  if (!perceive) return planning::BuildWalkDiagram(setup);
+  const planning::SyntheticCamera camera;
+  const planning::PerceptionSetup perception = planning::PerceptionSetupFromScenario(
+      scenario, camera.Calibration(),
+      perception::MakeMaterialSegmenter("builtin:" + DataDirectory() + "/models/builtin_material_segmenter.yaml"));
+  return planning::BuildMainDiagram(setup, perception,
+                                    planning::ScenarioCamera(scenario, camera, perception.period))
+      .walk;
 }
 
 }  // namespace
@@ -46,10 +59,13 @@ void RegisterDiagramCommand(CommandRegistry* registry) {
                 [](CLI::App& app) -> CommandAction {
                   auto dot = std::make_shared<bool>(false);
                   app.add_flag("--dot", *dot, "Print Graphviz dot (render with: cairn diagram --dot | dot -Tpng)");
-                  auto example = std::make_shared<std::string>("pendulum");
-                  AddChoiceOption(app, "--example", example.get(), "Which diagram", {"pendulum", "walk"});
+                  auto example = std::make_shared<std::string>();
+                  AddChoiceOption(app, "--example", example.get(),
+                                  "Which diagram (default: pendulum; main when --scenario is given)",
+                                  {"pendulum", "walk", "main"});
                   auto scenario = std::make_shared<std::string>();
-                  app.add_option("--scenario", *scenario, "With --example walk: the scenario YAML (docs/walk.md)");
+                  app.add_option("--scenario", *scenario,
+                                 "The scenario YAML of the walk (cairn walk) or main (cairn run) diagram");
                   auto cache = std::make_shared<std::string>();
                   app.add_option("--oracle-cache", *cache,
                                  "With --example walk: folder caching transition oracles (default "
@@ -57,11 +73,15 @@ void RegisterDiagramCommand(CommandRegistry* registry) {
                   return [dot, example, scenario, cache]() {
                     planning::WalkDiagram walk;
                     std::unique_ptr<systems::Diagram> pendulum;
-                    if (*example == "walk") {
+                    const std::string which = !example->empty() ? *example : scenario->empty() ? "pendulum" : "main";
+                    if (which == "walk" || which == "main") {
                       if (scenario->empty()) {
-                        throw UsageError("--example walk needs --scenario S.yaml (e.g. examples/scenarios/flat.yaml)");
+                        throw UsageError("--example " + which + " needs --scenario S.yaml (e.g. examples/scenarios/" +
+                                         (which == "walk" ? "flat.yaml" : "mockup/mockup.yaml") + ")");
                       }
-                      walk = WalkExample(*scenario, *cache);
+                      walk = WalkExample(*scenario, *cache, which == "main");
+                    } else if (!scenario->empty()) {
+                      throw UsageError("--scenario is for the walk and main diagrams; drop it or use --example main");
                     } else {
                       pendulum = examples::BuildPendulumDiagram(examples::PendulumExampleOptions{});
                     }

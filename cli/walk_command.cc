@@ -2,11 +2,16 @@
 // the Bullet plant on the scenario's terrain with its true friction -- one diagram (planning/walk) run by the
 // Simulator. Writes walk.json, plots of the ZMP, the COM and the per-step predictions against the measurements, and
 // an HTML viewer of the motion.
+//
+// `cairn run`: the same walk planned on what the robot's head camera sees instead of the scenario's terrain -- the
+// main diagram (planning/run: stereo -> occupancy and friction -> terrain -> the walk). It also writes terrain.png,
+// the perceived terrain with the plan.
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,7 +25,10 @@
 #include "cairn/multibody/plant/joint_drive.h"
 #include "cairn/multibody/plant/joint_pd_controller.h"
 #include "cairn/multibody/urdf_parser.h"
+#include "cairn/perception/friction/make_material_segmenter.h"
 #include "cairn/planning/locomotion/walking_objective.h"
+#include "cairn/planning/run/main_diagram.h"
+#include "cairn/planning/run/scenario_stereo_scene.h"
 #include "cairn/planning/scenarios/footstep_scenario.h"
 #include "cairn/planning/walk/scenario_terrain_boxes.h"
 #include "cairn/planning/walk/walk_diagram.h"
@@ -32,6 +40,7 @@
 #include "file_checks.h"
 #include "numeric_option.h"
 #include "oracle_cache.h"
+#include "plan_image.h"
 #include "walk_plots.h"
 
 namespace cairn::cli {
@@ -54,11 +63,24 @@ struct WalkArguments {
   bool open_loop = false;
   bool no_refine = false;
   bool json = false;
+  // `cairn run`: plan on the head camera's view (the main diagram) with this material segmenter.
+  bool perceive = false;
+  std::string segmenter;
 };
 
 bool IsWalkOutput(const std::string& name) {
   return name == "walk.json" || name == "walk_zmp.png" || name == "walk_com.png" || name == "walk_steps.png" ||
-         name == "walk.html";
+         name == "walk.html" || name == "terrain.png";
+}
+
+// The material of the scenario's ground under (x, y): the last region containing it (later regions lie on earlier
+// ones), or "" where none does or the region states a friction instead.
+std::string MaterialAt(const FootstepScenario& scenario, double x, double y) {
+  std::string material;
+  for (const FootstepScenario::Region& region : scenario.regions()) {
+    if (region.Contains(Eigen::Vector2d(x, y))) material = region.material;
+  }
+  return material;
 }
 
 // The sample recorded nearest to time t (the samples are kLogPeriod apart from t = 0).
@@ -130,14 +152,28 @@ void MaybeNumber(JsonWriter& json, const char* key, double value, JsonWriter::Nu
   }
 }
 
+// `perceived`: the terrain the main diagram planned on (`cairn run`), else null (`cairn walk`).
 std::string WalkJson(const FootstepScenario& scenario, const std::string& objective, const std::string& stabilizer,
                      bool feedback, const multibody::Model& robot, const std::vector<std::string>& soles,
-                     const WalkRecord& record, const std::vector<WalkStepComparison>& steps) {
+                     const WalkRecord& record, const std::vector<WalkStepComparison>& steps,
+                     const TerrainMap* perceived) {
   const JsonWriter::NumberFormat f6 = JsonWriter::Fixed(6), f3 = JsonWriter::Fixed(3);
   JsonWriter json;
   json.BeginObject().Key("scenario").String(scenario.name()).Key("objective").String(objective);
   json.Key("stabilizer").String(stabilizer).Key("feedback").Bool(feedback).Key("walked").Bool(record.start.ready);
   json.Key("reason").String(record.start.reason);
+  if (perceived != nullptr) {
+    int ground = 0, walkable = 0;
+    for (int row = 0; row < perceived->rows(); ++row) {
+      for (int col = 0; col < perceived->cols(); ++col) {
+        ground += perceived->has_ground(col, row) ? 1 : 0;
+        walkable += perceived->walkable(col, row) ? 1 : 0;
+      }
+    }
+    json.Key("perception").BeginObject().Key("cells").Integer(perceived->rows() * perceived->cols());
+    json.Key("ground_cells").Integer(ground).Key("walkable_cells").Integer(walkable);
+    json.Key("obstacle_voxels").Integer(perceived->occupied_voxels().size()).EndObject();
+  }
   json.Key("plan").BeginObject().Key("found").Bool(record.plan.found).Key("steps").Integer(record.plan.steps.size());
   json.Key("duration").Number(record.plan.duration, f6).Key("energy_J").Number(record.plan.energy, f6);
   json.Key("max_rcof").Number(record.plan.max_rcof, f6).EndObject();
@@ -187,6 +223,9 @@ std::string WalkJson(const FootstepScenario& scenario, const std::string& object
   json.Key("steps").BeginArray();
   for (const WalkStepComparison& s : steps) {
     json.BreakLine(2).BeginObject().Key("step").Integer(s.index).Key("foot").String(s.foot);
+    const FootPose& pose = record.plan.steps[static_cast<std::size_t>(s.index - 1)].pose;
+    json.Key("x").Number(pose.x, f6).Key("y").Number(pose.y, f6);
+    json.Key("material").String(MaterialAt(scenario, pose.x, pose.y));
     json.Key("start").Number(s.start, f3).Key("end").Number(s.end, f3).Key("completed").Bool(s.completed);
     json.Key("mu_allowed").Number(s.mu_allowed, f6).Key("predicted_rcof").Number(s.predicted_rcof, f6);
     MaybeNumber(json, "measured_rcof", s.measured_rcof, f6);
@@ -202,6 +241,8 @@ std::string WalkJson(const FootstepScenario& scenario, const std::string& object
 int Run(const WalkArguments& args) {
   CheckInputFile("--scenario", args.scenario, "a scenario YAML file");
   const FootstepScenario scenario = FootstepScenario::Load(args.scenario);
+  // Before the oracle is loaded (or built): a scenario the camera cannot see fails now.
+  if (args.perceive) ScenarioStereoScene(scenario);
   const std::string objective_name = args.objective.empty() ? scenario.objective() : args.objective;
   const WalkingObjective objective = ParseWalkingObjective(objective_name);
   // Before the oracle is loaded (or built): a scenario the plant cannot stand on fails now.
@@ -230,18 +271,35 @@ int Run(const WalkArguments& args) {
   setup.plant.bullet.time_step = args.step;
   setup.plant.drives = multibody::LoadJointDrives(*robot, walking);
   setup.plant.stop_on_fall = true;
-  const WalkDiagram walk = BuildWalkDiagram(setup);
   WalkRunOptions run;
   run.log_period = kLogPeriod;
   run.settle_time = args.settle_time;
-  const WalkRecord record = RunWalk(walk, run);
+  WalkRecord record;
+  std::shared_ptr<const TerrainMap> perceived;
+  double perception_seconds = 0.0;
+  if (args.perceive) {
+    const SyntheticCamera camera;
+    const PerceptionSetup perception = PerceptionSetupFromScenario(
+        scenario, camera.Calibration(), perception::MakeMaterialSegmenter(args.segmenter));
+    MainRecord main = RunMainDiagram(BuildMainDiagram(setup, perception, ScenarioCamera(scenario, camera,
+                                                                                        perception.period)),
+                                     run);
+    record = std::move(main.walk);
+    perceived = main.terrain;
+    perception_seconds = main.perception_seconds;
+  } else {
+    record = RunWalk(BuildWalkDiagram(setup), run);
+  }
   const std::vector<WalkStepComparison> steps = CompareSteps(record);
   const std::string json =
       WalkJson(scenario, objective_name, args.stabilizer, setup.feedback, *robot, setup.plant.sole_bodies, record,
-               steps);
+               steps, perceived.get());
 
   if (out) {
     out->WriteFile("walk.json", json + "\n");
+    if (perceived != nullptr) {
+      out->WriteFile("terrain.png", PlanImagePng(*perceived, record.plan, scenario.goal(), setup.geometry));
+    }
     if (record.start.ready) {
       out->WriteFile("walk_zmp.png", WalkZmpPng(record, setup.geometry));
       out->WriteFile("walk_com.png", WalkComPng(record));
@@ -271,15 +329,33 @@ int Run(const WalkArguments& args) {
     std::string line = json;
     line.pop_back();
     JsonWriter timing;
-    timing.BeginObject().Key("footsteps_s").Number(record.start.seconds.footsteps, JsonWriter::Fixed(3));
+    timing.BeginObject().Key("perception_s").Number(perception_seconds, JsonWriter::Fixed(3));
+    timing.Key("footsteps_s").Number(record.start.seconds.footsteps, JsonWriter::Fixed(3));
     timing.Key("trajectory_s").Number(record.start.seconds.trajectory, JsonWriter::Fixed(3));
     timing.Key("stabilizer_s").Number(record.start.seconds.stabilizer, JsonWriter::Fixed(3));
     timing.Key("plant_s").Number(record.plant_seconds, JsonWriter::Fixed(3)).EndObject();
     std::printf("%s, \"seconds\": %s}\n", line.c_str(), timing.text().c_str());
     return 0;
   }
-  std::printf("walk       %s (objective %s, stabiliser %s%s)\n", scenario.name().c_str(), objective_name.c_str(),
-              args.stabilizer.c_str(), args.open_loop ? ", open loop" : "");
+  std::printf("%s       %s (objective %s, stabiliser %s%s)\n", args.perceive ? "run " : "walk",
+              scenario.name().c_str(), objective_name.c_str(), args.stabilizer.c_str(),
+              args.open_loop ? ", open loop" : "");
+  if (perceived != nullptr) {
+    std::map<std::string, int> footholds;  // per material of the true ground
+    std::printf("perceived  terrain of %d x %d cells from the head camera's first frame\n", perceived->cols(),
+                perceived->rows());
+    for (const WalkStepComparison& s : steps) {
+      const FootPose& pose = record.plan.steps[static_cast<std::size_t>(s.index - 1)].pose;
+      const std::string material = MaterialAt(scenario, pose.x, pose.y);
+      std::printf("  step %2d  %-5s foot to (%6.3f, %6.3f) on %-8s mu allowed %.3f, predicted RCOF %.3f\n", s.index,
+                  s.foot.c_str(), pose.x, pose.y, material.empty() ? "-" : material.c_str(), s.mu_allowed,
+                  s.predicted_rcof);
+      ++footholds[material.empty() ? "-" : material];
+    }
+    std::string counts;
+    for (const auto& [material, count] : footholds) counts += " " + material + " " + std::to_string(count);
+    std::printf("footholds %s\n", counts.c_str());
+  }
   std::printf("plan       %s: %zu steps, %.3f s, %.1f J predicted\n", record.plan.found ? "found" : "NOT FOUND",
               record.plan.steps.size(), record.plan.duration, record.plan.energy);
   if (!record.start.ready) {
@@ -300,11 +376,12 @@ int Run(const WalkArguments& args) {
     std::printf("fall       %s\n", record.fell ? record.fall_reason.c_str() : "none");
     std::printf("slips      %zu\n", record.slips.size());
     std::printf("energy     E_COM %.2f J, E_ele %.2f J measured\n", last.com_energy, last.electrical_energy);
+    if (args.perceive) std::printf("time       perception %.2f s (the first frame)\n", perception_seconds);
     std::printf("time       footsteps %.2f s, trajectory %.2f s, stabiliser %.2f s, plant %.2f s\n",
                 record.start.seconds.footsteps, record.start.seconds.trajectory, record.start.seconds.stabilizer,
                 record.plant_seconds);
   }
-  if (out) std::printf("wrote      %s/walk.json%s\n", args.out.c_str(),
+  if (out) std::printf("wrote      %s/walk.json%s%s\n", args.out.c_str(), perceived ? ", terrain.png" : "",
                        record.start.ready ? ", walk_zmp.png, walk_com.png, walk_steps.png, walk.html" : "");
   return 0;
 }
@@ -338,6 +415,32 @@ void RegisterWalkCommand(CommandRegistry* registry) {
                   app.add_flag("--json", args->json, "Print walk.json and the stages' wall times as one JSON object");
                   return [args] { return Run(*args); };
                 });
+  registry->Add(
+      "run", "The main diagram: see the scenario through the head camera, plan on what was seen, walk it in the plant",
+      [](CLI::App& app) -> CommandAction {
+        auto args = std::make_shared<WalkArguments>();
+        args->perceive = true;
+        args->segmenter = "builtin:" + DataDirectory() + "/models/builtin_material_segmenter.yaml";
+        app.add_option("--scenario", args->scenario,
+                       "Scenario YAML whose regions name materials (docs/main_diagram.md; e.g. "
+                       "examples/scenarios/mockup/mockup.yaml)")
+            ->required();
+        AddChoiceOption(app, "--objective", &args->objective, "Step objective (default: the scenario's)",
+                        WalkingObjectiveNames());
+        AddChoiceOption(app, "--stabilizer", &args->stabilizer, "ZMP stabilisation of the reference",
+                        {"fft", "preview", "none"});
+        AddNumberOption(app, "--settle-time", &args->settle_time, "Simulated time after the reference ends [s]",
+                        NumberRange::Closed(0.0, kMaxSettleTime));
+        app.add_option("--segmenter", args->segmenter,
+                       "Material segmenter: builtin:PATH or onnx:PATH (default: the built-in one in data/models)");
+        app.add_option("--out", args->out,
+                       "Folder for walk.json, terrain.png, walk_zmp.png, walk_com.png, walk_steps.png, walk.html "
+                       "(replaced as a whole)");
+        app.add_option("--oracle-cache", args->oracle_cache,
+                       "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
+        app.add_flag("--json", args->json, "Print walk.json and the stages' wall times as one JSON object");
+        return [args] { return Run(*args); };
+      });
 }
 
 }  // namespace cairn::cli

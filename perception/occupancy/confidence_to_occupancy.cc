@@ -10,11 +10,16 @@
 namespace cairn::perception {
 
 ConfidenceToOccupancy::ConfidenceToOccupancy(const OccupancyGrid& prototype, const StereoCalibration& calibration,
-                                             double period, const CostCurveSensorModel::Options& sensor_options)
-    : calibration_(calibration), period_(period), model_(sensor_options) {
+                                             double period, const CostCurveSensorModel::Options& sensor_options,
+                                             double offset)
+    : calibration_(calibration), period_(period), offset_(offset), model_(sensor_options) {
   if (!(period > 0.0) || !std::isfinite(period)) {
     throw std::invalid_argument("ConfidenceToOccupancy: period " + cairn::FormatShort(period) +
                                 " s must be positive and finite (the camera's frame period, e.g. 0.1)");
+  }
+  if (!(offset >= 0.0) || !std::isfinite(offset)) {
+    throw std::invalid_argument("ConfidenceToOccupancy: offset " + cairn::FormatShort(offset) +
+                                " s must be finite and >= 0 (the time of the first periodic update)");
   }
   calibration.Validate();
   DeclareAbstractInputPort("confidence", systems::Value<DisparityVolume>(DisparityVolume()));
@@ -25,7 +30,8 @@ ConfidenceToOccupancy::ConfidenceToOccupancy(const OccupancyGrid& prototype, con
       "grid", systems::Value<OccupancyGrid>(prototype),
       [grid](const systems::Context& c, systems::AbstractValue* v) { v->SetFrom(c.get_abstract_state_value(grid)); },
       {abstract_state_ticket(grid)});
-  DeclarePeriodicUnrestrictedUpdateEvent(period, 0.0, &ConfidenceToOccupancy::Integrate);
+  DeclarePeriodicUnrestrictedUpdateEvent(period, offset, &ConfidenceToOccupancy::Integrate);
+  DeclareForcedUnrestrictedUpdateEvent(&ConfidenceToOccupancy::Integrate);
 }
 
 void ConfidenceToOccupancy::Integrate(const systems::Context& context, systems::State* next) const {

@@ -13,8 +13,11 @@
 
 namespace cairn::perception {
 
-/// Every `period` seconds (from t = 0), integrates the confidence volume on its input into the grid it holds as
-/// state, through the cost-curve sensor model (thesis eqs. 4.13-4.17) at the camera pose on its other input.
+/// Every `period` seconds (from t = `offset`), integrates the confidence volume on its input into the grid it holds
+/// as state, through the cost-curve sensor model (thesis eqs. 4.13-4.17) at the camera pose on its other input.
+/// ExecuteForcedEvents integrates the current frame at once: a diagram that must perceive before it plans (the
+/// main diagram) forces the first frame after Simulator::Initialize and starts the periodic updates one period
+/// later, so no frame is counted twice.
 ///
 /// | port | type | meaning |
 /// |---|---|---|
@@ -27,11 +30,12 @@ namespace cairn::perception {
 class ConfidenceToOccupancy final : public systems::LeafSystem {
  public:
   /// `prototype` fixes the grid's extent, resolution, clamps and initial values. Throws std::invalid_argument
-  /// for a non-positive period or a bad calibration.
+  /// for a non-positive period, a negative offset or a bad calibration.
   ConfidenceToOccupancy(const OccupancyGrid& prototype, const StereoCalibration& calibration, double period,
-                        const CostCurveSensorModel::Options& sensor_options = {});
+                        const CostCurveSensorModel::Options& sensor_options = {}, double offset = 0.0);
 
   double period() const { return period_; }
+  double offset() const { return offset_; }
   const StereoCalibration& calibration() const { return calibration_; }
 
   const systems::InputPort& get_confidence_input_port() const { return get_input_port(0); }
@@ -43,6 +47,7 @@ class ConfidenceToOccupancy final : public systems::LeafSystem {
 
   StereoCalibration calibration_;
   double period_;
+  double offset_;
   CostCurveSensorModel model_;
   int grid_state_{};
 };

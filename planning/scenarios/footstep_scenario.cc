@@ -173,7 +173,7 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
     throw yaml.Error(root["eta"], "eta must be in (0, 1) (the probability that a foothold's friction is at least "
                                   "what the planner uses), got " + Format(s.eta_) + ".");
   }
-  perception::MaterialRegistry registry = perception::MaterialRegistry::ThesisTable33();
+  perception::MaterialRegistry& registry = s.registry_;
   if (root["materials"]) {
     registry = perception::MaterialRegistry::LoadYaml(yaml.Resolve(yaml.AsString(root["materials"], "materials")));
   }
@@ -271,6 +271,7 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
         throw yaml.Error(r["material"], where + ": " + error.what());
       }
       region.friction_source = "material " + label;
+      region.material = label;
     }
     s.regions_.push_back(std::move(region));
   }

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <cairn/perception/friction/friction_distribution.h>
+#include <cairn/perception/friction/material_registry.h>
 #include <cairn/planning/footstep/foot_pose.h>
 #include <cairn/planning/footstep/footstep_planner_options.h>
 #include <cairn/planning/footstep/terrain_map.h>
@@ -29,6 +30,7 @@ class FootstepScenario {
     Eigen::Vector2d slope_origin{Eigen::Vector2d::Zero()};
     perception::FrictionDistribution friction{perception::FrictionDistribution::Normal(1.0, 0.0)};
     std::string friction_source;  ///< "mu 0.12", "material asphalt", "normal(0.5, 0.1)", for reports
+    std::string material;         ///< the registry label of a `material:` region (what it looks like); else empty
 
     /// Ground height of the region's plane at (x, y).
     double HeightAt(const Eigen::Vector2d& p) const;
@@ -72,6 +74,14 @@ class FootstepScenario {
   const std::string& objective() const { return objective_; }
   double eta() const { return eta_; }
   const std::vector<Region>& regions() const { return regions_; }
+  /// The material registry `material:` regions were read with (`materials:`, default thesis Table 3.3): what a
+  /// perception pipeline seeing this scenario believes about its materials.
+  const perception::MaterialRegistry& registry() const { return registry_; }
+  /// The mapped area's corners, [x, y].
+  const Eigen::Vector2d& min_corner() const { return min_corner_; }
+  const Eigen::Vector2d& max_corner() const { return max_corner_; }
+  /// The raster's cell size, m.
+  double resolution() const { return resolution_; }
   const std::vector<TerrainMap::Obstacle>& obstacles() const { return obstacles_; }
   const Stance& start() const { return start_; }
   const StanceGoal& goal() const { return goal_; }
@@ -96,6 +106,7 @@ class FootstepScenario {
   Eigen::Vector2d max_corner_{Eigen::Vector2d::Zero()};
   double resolution_{0.025};
   std::vector<Region> regions_;
+  perception::MaterialRegistry registry_{perception::MaterialRegistry::ThesisTable33()};
   std::vector<TerrainMap::Obstacle> obstacles_;
   Stance start_;
   StanceGoal goal_;

@@ -50,34 +50,64 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
   const std::size_t columns = static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows);
   TerrainMap terrain(corner.head<2>(), cols, rows, res);
 
-  // The ground cell of each column: the top occupied layer whose centre is at most max_ground_height (-1: none).
-  std::vector<int> ground_layer(columns, -1);
-  for (int r = 0; r < rows; ++r) {
-    for (int c = 0; c < cols; ++c) {
-      for (int k = layers - 1; k >= 0; --k) {
-        if (corner.z() + (k + 0.5) * res > options.max_ground_height) continue;
-        if (grid.probability(grid.Index(Eigen::Vector3i(c, r, k))) > options.occupied_threshold) {
-          ground_layer[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c)] = k;
-          break;
-        }
-      }
-    }
+  // The points inside the grid with their column and layer, grouped by column (in their order: the same bytes out).
+  struct ColumnPoint {
+    std::size_t column;
+    int layer;
+    int index;
+  };
+  // Counting sort by column: two passes over the points, in their order within a column.
+  std::vector<ColumnPoint> cells;
+  cells.reserve(static_cast<std::size_t>(points.size()));
+  std::vector<std::size_t> first(columns + 1, 0);
+  for (int i = 0; i < points.size(); ++i) {
+    const std::optional<Eigen::Vector3i> cell = grid.CellOf(points.points_W[static_cast<std::size_t>(i)]);
+    if (!cell) continue;
+    const std::size_t column =
+        static_cast<std::size_t>(cell->y()) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(cell->x());
+    cells.push_back({column, cell->z(), i});
+    ++first[column + 1];
   }
+  for (std::size_t column = 0; column < columns; ++column) first[column + 1] += first[column];
+  std::vector<ColumnPoint> located(cells.size());
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  for (const ColumnPoint& p : cells) located[next[p.column]++] = p;
 
-  // The points that lie in their column's ground cell: their heights and summed mixtures, per column.
+  // The ground of each column: the highest occupied layer (centre at most max_ground_height) that its surface's
+  // points confirm -- at least min_points of them within one layer of it -- else the highest occupied layer, then
+  // without points. A surface on a layer boundary spreads its points over two layers, and a single stereo frame
+  // leaves cells a few centimetres above the floor occupied by mismatches: the points, which lie on the surface
+  // itself, tell the floor from those (measured on the mock-up's floor: without them half of the wood's cells had
+  // no friction and some stood 5-7.5 cm high). The cells above the ground stay obstacles below, with their
+  // probability. Per column: the ground layer, its points' heights and summed mixtures.
+  std::vector<int> ground_layer(columns, -1);
   std::vector<std::vector<float>> heights(columns);
   Eigen::MatrixXd mixture = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(columns), labels);
   std::vector<int> count(columns, 0);
-  for (int i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3d& p = points.points_W[static_cast<std::size_t>(i)];
-    const std::optional<Eigen::Vector3i> cell = grid.CellOf(p);
-    if (!cell) continue;
-    const std::size_t column = static_cast<std::size_t>(cell->y()) * static_cast<std::size_t>(cols) +
-                               static_cast<std::size_t>(cell->x());
-    if (ground_layer[column] != cell->z()) continue;
-    heights[column].push_back(static_cast<float>(p.z()));
-    mixture.row(static_cast<Eigen::Index>(column)) += points.weights.row(i).cast<double>();
-    ++count[column];
+  auto near = [](int layer, int ground) { return layer >= ground - 1 && layer <= ground + 1; };
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      const std::size_t column = static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c);
+      int top = -1, confirmed = -1;
+      for (int k = layers - 1; k >= 0 && confirmed < 0; --k) {
+        if (corner.z() + (k + 0.5) * res > options.max_ground_height) continue;
+        if (grid.probability(grid.Index(Eigen::Vector3i(c, r, k))) <= options.occupied_threshold) continue;
+        if (top < 0) top = k;
+        int n = 0;
+        for (std::size_t j = first[column]; j < first[column + 1]; ++j) n += near(located[j].layer, k) ? 1 : 0;
+        if (n >= options.min_points) confirmed = k;
+      }
+      const int ground = confirmed >= 0 ? confirmed : top;
+      ground_layer[column] = ground;
+      if (ground < 0) continue;
+      for (std::size_t j = first[column]; j < first[column + 1]; ++j) {
+        if (!near(located[j].layer, ground)) continue;
+        const int i = located[j].index;
+        heights[column].push_back(static_cast<float>(points.points_W[static_cast<std::size_t>(i)].z()));
+        mixture.row(static_cast<Eigen::Index>(column)) += points.weights.row(i).cast<double>();
+        ++count[column];
+      }
+    }
   }
 
   std::vector<double> height(columns, std::numeric_limits<double>::quiet_NaN());

@@ -34,19 +34,20 @@ void ValidateTerrainAssemblyOptions(const TerrainAssemblyOptions& options);
 ///
 /// Grid: one terrain cell per occupancy column, same resolution and horizontal extent.
 ///
-/// Ground: the top occupied cell of each column whose centre is at most max_ground_height. Its height is the
-/// median z of the friction points inside that cell (the surface itself, not the cell's quantised face), or the
-/// cell's top face when no point falls in it; a column with no such cell has no ground. Normals come from the
-/// height field by central differences (one-sided at a cell whose neighbour has no ground; vertical alone).
+/// Ground: in each column, the highest occupied cell (centre at most max_ground_height) confirmed by the friction
+/// points -- at least min_points of them within one layer of it (a surface on a layer boundary spreads its points
+/// over two layers) -- else, without points, the highest occupied cell; a column with no occupied cell has no
+/// ground. The surface's points are those within one layer of the ground cell; its height is their median z (the
+/// surface itself, not the cell's quantised face), or the cell's top face when there are none.
 ///
-/// Friction: the material mixture weights of the points in a ground cell are averaged (the mixture of the
+/// Friction: the material mixture weights of the ground surface's points are averaged (the mixture of the
 /// points' mixtures), and the cell's friction is that mixture's Q_{1-eta} under `registry` (FrictionQuantile):
 /// the quantile of the fused distribution, not a mean of the points' quantiles, which would be optimistic for a
 /// cell where two materials meet. A cell with fewer than min_points points gets unknown_friction.
 ///
-/// Obstacles: every occupied cell above its column's ground cell (all of them in a column without ground)
-/// becomes an occupied voxel of the map with its occupancy probability (TerrainMap::SetOccupiedVoxels), for the
-/// planners' probabilistic body check.
+/// Obstacles: every occupied cell above its column's ground cell (all of them in a column without ground; an
+/// unconfirmed cell above the surface too, e.g. a stereo mismatch) becomes an occupied voxel of the map with its
+/// occupancy probability (TerrainMap::SetOccupiedVoxels), for the planners' probabilistic body check.
 ///
 /// Throws std::invalid_argument for bad options, friction points whose weights do not have one column per
 /// registry label or one row per point, or more occupied voxels than TerrainMap::kMaxVoxels.

@@ -69,45 +69,48 @@ WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_pt
   return setup;
 }
 
-WalkDiagram BuildWalkDiagram(const WalkSetup& setup) {
+WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* terrain_source,
+                          systems::DiagramBuilder* builder) {
   if (setup.cost_model == nullptr) throw std::invalid_argument("BuildWalkDiagram: the step cost model is null");
-  if (setup.terrain == nullptr) throw std::invalid_argument("BuildWalkDiagram: the planner's terrain is null");
+  if (terrain_source == nullptr && setup.terrain == nullptr) {
+    throw std::invalid_argument("BuildWalkDiagram: the planner's terrain is null");
+  }
   if (setup.robot == nullptr) throw std::invalid_argument("BuildWalkDiagram: the robot model is null");
   if (setup.controller == nullptr) throw std::invalid_argument("BuildWalkDiagram: the PD controller is null");
-  systems::DiagramBuilder builder;
   WalkDiagram walk;
-  auto* start = builder.AddNamedSystem<systems::ConstantValueSource<Stance>>("start", setup.start);
-  auto* goal = builder.AddNamedSystem<systems::ConstantValueSource<StanceGoal>>("goal", setup.goal);
-  auto* terrain = builder.AddNamedSystem<systems::ConstantValueSource<TerrainMap>>("terrain", *setup.terrain);
+  auto* start = builder->AddNamedSystem<systems::ConstantValueSource<Stance>>("start", setup.start);
+  auto* goal = builder->AddNamedSystem<systems::ConstantValueSource<StanceGoal>>("goal", setup.goal);
+  if (terrain_source == nullptr) {
+    terrain_source =
+        &builder->AddNamedSystem<systems::ConstantValueSource<TerrainMap>>("terrain", *setup.terrain)->GetOutputPort("y0");
+  }
   auto* environment =
-      builder.AddNamedSystem<systems::ConstantValueSource<std::vector<EnvironmentBox>>>("environment", setup.environment);
-  auto* footsteps = builder.AddNamedSystem<FootstepPlanner>("footsteps", setup.cost_model, setup.geometry,
-                                                            setup.planner, setup.refine_model, setup.objective);
-  auto* trajectory = builder.AddNamedSystem<TrajectoryOptimizer>("trajectory", setup.robot, setup.trajectory);
-  auto* stabilizer = builder.AddNamedSystem<Stabilizer>("stabilizer", setup.robot, setup.stabilizer);
-  auto* player = builder.AddNamedSystem<StabilizedReferencePlayer>("player", setup.robot);
-  auto* plant = builder.AddNamedSystem<multibody::HumanoidPlant>(
+      builder->AddNamedSystem<systems::ConstantValueSource<std::vector<EnvironmentBox>>>("environment", setup.environment);
+  auto* footsteps = builder->AddNamedSystem<FootstepPlanner>("footsteps", setup.cost_model, setup.geometry,
+                                                             setup.planner, setup.refine_model, setup.objective);
+  auto* trajectory = builder->AddNamedSystem<TrajectoryOptimizer>("trajectory", setup.robot, setup.trajectory);
+  auto* stabilizer = builder->AddNamedSystem<Stabilizer>("stabilizer", setup.robot, setup.stabilizer);
+  auto* player = builder->AddNamedSystem<StabilizedReferencePlayer>("player", setup.robot);
+  auto* plant = builder->AddNamedSystem<multibody::HumanoidPlant>(
       "plant", *setup.robot, setup.plant_terrain, *setup.controller,
       StandingAtStart(*setup.robot, setup.plant, setup.start), setup.plant);
-  builder.Connect(terrain->GetOutputPort("y0"), footsteps->get_terrain_input_port());
-  builder.Connect(start->GetOutputPort("y0"), footsteps->get_start_input_port());
-  builder.Connect(goal->GetOutputPort("y0"), footsteps->get_goal_input_port());
-  builder.Connect(footsteps->get_plan_output_port(), trajectory->get_plan_input_port());
-  builder.Connect(environment->GetOutputPort("y0"), trajectory->get_environment_input_port());
-  builder.Connect(trajectory->get_trajectory_output_port(), stabilizer->get_trajectory_input_port());
-  builder.Connect(stabilizer->get_reference_output_port(), player->get_reference_input_port());
+  builder->Connect(*terrain_source, footsteps->get_terrain_input_port());
+  builder->Connect(start->GetOutputPort("y0"), footsteps->get_start_input_port());
+  builder->Connect(goal->GetOutputPort("y0"), footsteps->get_goal_input_port());
+  builder->Connect(footsteps->get_plan_output_port(), trajectory->get_plan_input_port());
+  builder->Connect(environment->GetOutputPort("y0"), trajectory->get_environment_input_port());
+  builder->Connect(trajectory->get_trajectory_output_port(), stabilizer->get_trajectory_input_port());
+  builder->Connect(stabilizer->get_reference_output_port(), player->get_reference_input_port());
   if (setup.feedback) {
-    auto* balance = builder.AddNamedSystem<BalanceFeedback>("balance", setup.robot, setup.balance);
-    builder.Connect(player->get_reference_output_port(), balance->get_reference_input_port());
-    builder.Connect(plant->GetOutputPort("state"), balance->get_state_input_port());
-    builder.Connect(plant->GetOutputPort("contacts"), balance->get_contacts_input_port());
-    builder.Connect(balance->get_reference_output_port(), plant->GetInputPort("reference"));
+    auto* balance = builder->AddNamedSystem<BalanceFeedback>("balance", setup.robot, setup.balance);
+    builder->Connect(player->get_reference_output_port(), balance->get_reference_input_port());
+    builder->Connect(plant->GetOutputPort("state"), balance->get_state_input_port());
+    builder->Connect(plant->GetOutputPort("contacts"), balance->get_contacts_input_port());
+    builder->Connect(balance->get_reference_output_port(), plant->GetInputPort("reference"));
     walk.balance = balance;
   } else {
-    builder.Connect(player->get_reference_output_port(), plant->GetInputPort("reference"));
+    builder->Connect(player->get_reference_output_port(), plant->GetInputPort("reference"));
   }
-  walk.diagram = builder.Build();
-  walk.diagram->set_name("walk");
   walk.footsteps = footsteps;
   walk.trajectory = trajectory;
   walk.stabilizer = stabilizer;
@@ -116,15 +119,37 @@ WalkDiagram BuildWalkDiagram(const WalkSetup& setup) {
   return walk;
 }
 
+WalkDiagram BuildWalkDiagram(const WalkSetup& setup) {
+  systems::DiagramBuilder builder;
+  WalkDiagram walk = AddWalkBlocks(setup, nullptr, &builder);
+  walk.diagram = builder.Build();
+  walk.diagram->set_name("walk");
+  return walk;
+}
+
 WalkStart InitializeWalk(const WalkDiagram& walk, systems::Simulator* simulator) {
   if (simulator == nullptr || &simulator->get_system() != walk.diagram.get()) {
     throw std::invalid_argument("InitializeWalk: the simulator does not simulate this walk diagram");
   }
-  WalkStart start;
-  systems::Context& root = simulator->get_mutable_context();
-  auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = std::chrono::steady_clock::now();
   simulator->Initialize();
-  start.seconds.footsteps = SecondsSince(t0);
+  const double footsteps = SecondsSince(t0);
+  WalkStart start = SettleWalk(walk, &simulator->get_mutable_context(), /*replan_footsteps=*/false);
+  start.seconds.footsteps += footsteps;
+  return start;
+}
+
+WalkStart SettleWalk(const WalkDiagram& walk, systems::Context* root_context, bool replan_footsteps) {
+  if (root_context == nullptr || walk.diagram == nullptr || walk.footsteps == nullptr) {
+    throw std::invalid_argument("SettleWalk: give a built walk diagram and its root context");
+  }
+  WalkStart start;
+  systems::Context& root = *root_context;
+  auto t0 = std::chrono::steady_clock::now();
+  if (replan_footsteps) {
+    walk.footsteps->ExecuteForcedEvents(&walk.diagram->GetMutableSubsystemContext(*walk.footsteps, &root));
+    start.seconds.footsteps = SecondsSince(t0);
+  }
   const auto& plan = walk.footsteps->get_plan_output_port().Eval<FootstepPlan>(
       walk.diagram->GetSubsystemContext(*walk.footsteps, root));
   if (!plan.found) {

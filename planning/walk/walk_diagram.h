@@ -26,6 +26,7 @@
 #include <cairn/planning/walk/balance_feedback.h>
 #include <cairn/systems/analysis/simulator.h>
 #include <cairn/systems/framework/diagram.h>
+#include <cairn/systems/framework/diagram_builder.h>
 
 namespace cairn::planning {
 
@@ -87,6 +88,13 @@ struct WalkDiagram {
 /// for a missing cost model, terrain, robot or controller, and as the blocks' constructors do.
 WalkDiagram BuildWalkDiagram(const WalkSetup& setup);
 
+/// The walk's blocks added to a larger diagram under construction (the main diagram puts perception in front):
+/// as BuildWalkDiagram, but the footstep planner's terrain comes from `terrain_source` (a TerrainMap output of a
+/// system already in `builder`; null: a constant source of setup.terrain, which may then not be null). The
+/// returned diagram pointer is empty: the caller builds and owns the diagram and stores it there.
+WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* terrain_source,
+                          systems::DiagramBuilder* builder);
+
 /// Wall time of each planning stage while InitializeWalk() settled the chain, s (not part of any result).
 struct WalkSettleTimes {
   double footsteps{0.0};   ///< Simulator::Initialize(): the footstep search (the other blocks' initial events are trivial)
@@ -114,5 +122,11 @@ struct WalkStart {
 /// its reference. When a stage gives nothing (no footstep plan, no trajectory, no stabilised reference), the
 /// plant is left as built and `ready` is false: simulating would fail at the player.
 WalkStart InitializeWalk(const WalkDiagram& walk, systems::Simulator* simulator);
+
+/// InitializeWalk()'s settling after Simulator::Initialize(), for diagrams whose terrain is only known once other
+/// events ran (perception): with `replan_footsteps`, the FootstepPlanner's forced event plans again first (on the
+/// terrain its input shows now). `root_context` is walk.diagram's context. Throws std::invalid_argument for a
+/// null context or an unbuilt walk.
+WalkStart SettleWalk(const WalkDiagram& walk, systems::Context* root_context, bool replan_footsteps);
 
 }  // namespace cairn::planning

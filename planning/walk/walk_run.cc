@@ -25,7 +25,7 @@ WalkRecord RunWalk(const WalkDiagram& walk, const WalkRunOptions& options) {
   }
   WalkRecord record;
   systems::Simulator simulator(*walk.diagram);
-  record.start = InitializeWalk(walk, &simulator);
+  record.start = options.initialize ? options.initialize(&simulator) : InitializeWalk(walk, &simulator);
   const systems::Context& root = simulator.get_context();
   record.plan = walk.footsteps->get_plan_output_port().Eval<FootstepPlan>(
       walk.diagram->GetSubsystemContext(*walk.footsteps, root));

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct WalkRunOptions {
   /// s simulated after the reference ends (standing on its last sample), so a fall after the last step counts;
   /// in [0, 60].
   double settle_time{1.0};
+  /// Settles the diagram's planners before the plant walks, given the diagram's simulator; null: InitializeWalk().
+  /// The main diagram passes its own, which perceives first (InitializeMainDiagram).
+  std::function<WalkStart(systems::Simulator*)> initialize;
 };
 
 /// One recorded sample of the plant.
@@ -49,7 +53,7 @@ struct WalkRecord {
   double plant_seconds{0.0};        ///< wall time of the plant's simulation (not part of any result)
 };
 
-/// Runs the walk diagram: InitializeWalk(), then the Simulator until the reference's end plus
+/// Runs the walk diagram: InitializeWalk() (or options.initialize), then the Simulator until the reference's end plus
 /// options.settle_time, recording a sample every options.log_period. A fall is a result (the plant's verdict); it
 /// ends the run when the plant's stop_on_fall option is set. Throws std::invalid_argument for an empty diagram or
 /// options out of range; std::runtime_error when an event handler fails.

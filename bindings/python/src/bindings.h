@@ -45,6 +45,8 @@ void DefinePlanningTerrain(py::module_ m);
 void DefinePlanningStabilization(py::module_ m);
 /// cairn.planning, walk part: the walk diagram, its run and the reference player (after DefinePlanningStabilization).
 void DefinePlanningWalk(py::module_ m);
+/// cairn.planning, the main diagram: perception in front of the walk (after DefinePlanningWalk).
+void DefinePlanningRun(py::module_ m);
 /// cairn.visualization: the HTML motion viewer.
 void DefineVisualization(py::module_ m);
 /// cairn.examples: the example systems the C++ examples are built from.

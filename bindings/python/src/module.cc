@@ -34,6 +34,7 @@ PYBIND11_MODULE(_cairn, m) {
   cairn::python::DefinePlanningGrid(planning);
   cairn::python::DefinePlanningStabilization(planning);
   cairn::python::DefinePlanningWalk(planning);
+  cairn::python::DefinePlanningRun(planning);
   cairn::python::DefineVisualization(m.def_submodule("visualization", "HTML viewers: cairn::visualization."));
   cairn::python::DefineExamples(m.def_submodule("examples", "The example systems of examples/systems."));
   cairn::python::FixDynamicAttributeTraversal(m);

@@ -25,6 +25,7 @@
 #include "cairn/perception/stereo/confidence_model.h"
 #include "cairn/perception/stereo/cost_samples.h"
 #include "cairn/perception/stereo/cost_volume_options.h"
+#include "cairn/perception/stereo/disparity_to_depth.h"
 #include "cairn/perception/stereo/disparity_volume.h"
 #include "cairn/perception/stereo/histogram_sensor_model.h"
 #include "cairn/perception/stereo/stereo_calibration.h"
@@ -336,6 +337,30 @@ void DefinePerceptionStereoOccupancy(py::module_ m) {
       .def("get_confidence_output_port", PortGetter(&StereoMatcher::get_confidence_output_port), "Output `confidence`.")
       .def("get_model_output_port", PortGetter(&StereoMatcher::get_model_output_port), "Output `model`.");
 
+  py::class_<DisparityToDepth, systems::LeafSystem> to_depth(
+      m, "DisparityToDepth",
+      "System: input `wta` (WtaResult), output `depth` (float32 image, fx * baseline / d where the winner is "
+      "trusted, NaN elsewhere).");
+  py::class_<DisparityToDepth::Options>(to_depth, "Options", "Which winners are trusted.")
+      .def(py::init<>(), "Left-right check on, any peak ratio.")
+      .def_readwrite("require_left_right", &DisparityToDepth::Options::require_left_right, "Left-right check.")
+      .def_readwrite("min_peak_ratio", &DisparityToDepth::Options::min_peak_ratio, "Smallest peak ratio (>= 1).");
+  to_depth
+      .def(py::init<const StereoCalibration&, const DisparityToDepth::Options&>(), py::arg("calibration"),
+           py::arg("options") = DisparityToDepth::Options(), "ValueError for a bad calibration or peak ratio.")
+      .def("calibration", &DisparityToDepth::calibration, "The calibration.")
+      .def("options", &DisparityToDepth::options, "The options.")
+      .def(
+          "Convert",
+          [](const DisparityToDepth& self, const WtaResult& wta) {
+            cv::Mat depth;
+            self.Convert(wta, &depth);
+            return depth;
+          },
+          py::arg("wta"), "The output's computation: depth image of a WtaResult; ValueError for mismatched images.")
+      .def("get_wta_input_port", PortGetter(&DisparityToDepth::get_wta_input_port), "Input `wta`.")
+      .def("get_depth_output_port", PortGetter(&DisparityToDepth::get_depth_output_port), "Output `depth`.");
+
   py::class_<StereoSource, systems::LeafSystem>(
       m, "StereoSource",
       "System playing back rectified pairs from a YAML sequence: outputs `left`, `right` (Image) and `X_WC` "
@@ -478,12 +503,15 @@ void DefinePerceptionStereoOccupancy(py::module_ m) {
 
   py::class_<ConfidenceToOccupancy, systems::LeafSystem>(
       m, "ConfidenceToOccupancy",
-      "System: every `period`, integrates input `confidence` (DisparityVolume) at input `X_WC` (4x4 pose) into the "
-      "OccupancyGrid it holds as state, output `grid`.")
-      .def(py::init<const OccupancyGrid&, const StereoCalibration&, double, const CostCurveSensorModel::Options&>(),
+      "System: every `period` from t = `offset`, and on ExecuteForcedEvents, integrates input `confidence` "
+      "(DisparityVolume) at input `X_WC` (4x4 pose) into the OccupancyGrid it holds as state, output `grid`.")
+      .def(py::init<const OccupancyGrid&, const StereoCalibration&, double, const CostCurveSensorModel::Options&,
+                    double>(),
            py::arg("prototype"), py::arg("calibration"), py::arg("period"),
-           py::arg("sensor_options") = CostCurveSensorModel::Options(), "ValueError for a bad period or calibration.")
+           py::arg("sensor_options") = CostCurveSensorModel::Options(), py::arg("offset") = 0.0,
+           "ValueError for a bad period, offset or calibration.")
       .def("period", &ConfidenceToOccupancy::period, "Update period.")
+      .def("offset", &ConfidenceToOccupancy::offset, "Time of the first periodic update.")
       .def("calibration", &ConfidenceToOccupancy::calibration, "The calibration.")
       .def("get_confidence_input_port", PortGetter(&ConfidenceToOccupancy::get_confidence_input_port), "Input `confidence`.")
       .def("get_pose_input_port", PortGetter(&ConfidenceToOccupancy::get_pose_input_port), "Input `X_WC`.")

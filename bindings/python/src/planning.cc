@@ -654,6 +654,8 @@ void DefinePlanning(py::module_ m) {
       .def_readonly("uphill", &FootstepScenario::Region::uphill, "Direction of steepest ascent.")
       .def_readonly("friction", &FootstepScenario::Region::friction, "Friction distribution.")
       .def_readonly("friction_source", &FootstepScenario::Region::friction_source, "For reports.")
+      .def_readonly("material", &FootstepScenario::Region::material,
+                    "Registry label of a `material:` region, else empty.")
       .def("HeightAt", &FootstepScenario::Region::HeightAt, py::arg("p"), "Plane height at p.")
       .def("Contains", &FootstepScenario::Region::Contains, py::arg("p"), "True if p is inside.");
   scenario.def_static("Load", &FootstepScenario::Load, py::arg("path"), "Reads and validates a scenario file.")
@@ -664,6 +666,10 @@ void DefinePlanning(py::module_ m) {
       .def("set_objective", &FootstepScenario::set_objective, py::arg("objective"), "Sets the objective name.")
       .def("eta", &FootstepScenario::eta, "Chance-constraint confidence.")
       .def("regions", &FootstepScenario::regions, "Terrain regions.")
+      .def("registry", &FootstepScenario::registry, "The material registry of `material:` regions.")
+      .def("min_corner", &FootstepScenario::min_corner, "Mapped area, minimum [x, y].")
+      .def("max_corner", &FootstepScenario::max_corner, "Mapped area, maximum [x, y].")
+      .def("resolution", &FootstepScenario::resolution, "Raster resolution of the terrain, m.")
       .def("obstacles", &FootstepScenario::obstacles, "Obstacles.")
       .def("start", &FootstepScenario::start, "Start stance.")
       .def("goal", &FootstepScenario::goal, "Goal.")

@@ -267,3 +267,39 @@ def test_stereo_source_reads_a_sequence(tmp_path):
     assert source.calibration().fx == 100.0
     with pytest.raises(ValueError, match="missing.yaml"):
         perception.StereoSource(str(tmp_path / "missing.yaml"), 0.5)
+
+
+def test_disparity_to_depth_between_the_matcher_and_a_consumer():
+    """DisparityToDepth turns the matcher's WTA into depth fx * b / d; the forced occupancy update and its offset."""
+    left, right = shifted_pair(disparity=5)
+    calibration = perception.StereoCalibration(50.0, 50.0, 39.5, 19.5, 0.1)
+    matcher_options = perception.StereoMatcher.Options()
+    matcher_options.cost_volume = options()
+    builder = DiagramBuilder()
+    left_source = builder.AddSystem(ImageSource(left))
+    right_source = builder.AddSystem(ImageSource(right))
+    matcher = builder.AddSystem(perception.StereoMatcher(matcher_options))
+    to_depth = builder.AddSystem(perception.DisparityToDepth(calibration))
+    builder.Connect(left_source.get_output_port(0), matcher.get_left_input_port())
+    builder.Connect(right_source.get_output_port(0), matcher.get_right_input_port())
+    builder.Connect(matcher.get_wta_output_port(), to_depth.get_wta_input_port())
+    builder.ExportOutput(to_depth.get_depth_output_port(), "depth")
+    builder.ExportOutput(matcher.get_wta_output_port(), "wta")
+    diagram = builder.Build()
+    context = diagram.CreateDefaultContext()
+    depth = diagram.GetOutputPort("depth").Eval(context)
+    disparity = np.array(diagram.GetOutputPort("wta").Eval(context).disparity)  # sub-pixel, about 5
+    assert depth.dtype == np.float32 and depth.shape == left.shape
+    inner = (slice(5, -5), slice(20, -5))
+    np.testing.assert_allclose(depth[inner], 50.0 * 0.1 / disparity[inner], rtol=1e-5)
+    np.testing.assert_allclose(depth[inner], 1.0, rtol=0.1)
+    with pytest.raises(ValueError, match="min_peak_ratio must be a finite number >= 1"):
+        bad = perception.DisparityToDepth.Options()
+        bad.min_peak_ratio = 0.5
+        perception.DisparityToDepth(calibration, bad)
+    fusion = perception.ConfidenceToOccupancy(
+        perception.OccupancyGrid(np.zeros(3), 0.1, np.array([2, 2, 2])), calibration, 0.1, offset=0.1)
+    assert fusion.offset() == 0.1
+    with pytest.raises(ValueError, match="offset -1 s"):
+        perception.ConfidenceToOccupancy(
+            perception.OccupancyGrid(np.zeros(3), 0.1, np.array([2, 2, 2])), calibration, 0.1, offset=-1.0)

@@ -49,9 +49,32 @@ TEST(ConfidenceToOccupancyTest, IntegratesOneFramePerPeriodFromFixedInputs) {
   EXPECT_GT(grid.Probability(Eigen::Vector3d(0.0, 0.0, 5.0 / 3.0)), 0.5);
 }
 
+// A diagram that perceives before it plans forces the first frame and starts the periods one period later.
+TEST(ConfidenceToOccupancyTest, AForcedUpdateIntegratesNowAndTheOffsetDelaysThePeriodicOnes) {
+  ConfidenceToOccupancy system(SmallGrid(), kCalibration, 0.1, {}, 0.1);
+  EXPECT_EQ(system.offset(), 0.1);
+  auto context = system.CreateDefaultContext();
+  system.get_confidence_input_port().FixValue(context.get(), SureConfidence());
+  system.get_pose_input_port().FixValue(context.get(), Eigen::Isometry3d(Eigen::Isometry3d::Identity()));
+  systems::Simulator simulator(system, std::move(context));
+  simulator.Initialize();
+  system.ExecuteForcedEvents(&simulator.get_mutable_context());
+  OccupancyGrid expected = SmallGrid();
+  CostCurveSensorModel().Integrate(SureConfidence(), kCalibration, Eigen::Isometry3d::Identity(), &expected);
+  auto grid_now = [&]() -> const OccupancyGrid& {
+    return system.get_grid_output_port().Eval<OccupancyGrid>(simulator.get_context());
+  };
+  for (std::size_t i = 0; i < expected.num_cells(); ++i) ASSERT_EQ(grid_now().log_odds(i), expected.log_odds(i)) << i;
+  simulator.AdvanceTo(0.15);  // one periodic update, at t = 0.1 (none at t = 0)
+  CostCurveSensorModel().Integrate(SureConfidence(), kCalibration, Eigen::Isometry3d::Identity(), &expected);
+  for (std::size_t i = 0; i < expected.num_cells(); ++i) ASSERT_EQ(grid_now().log_odds(i), expected.log_odds(i)) << i;
+}
+
 TEST(ConfidenceToOccupancyTest, RejectsBadPeriod) {
   CAIRN_EXPECT_THROWS_WITH(ConfidenceToOccupancy(SmallGrid(), kCalibration, -1.0), std::invalid_argument,
                            "period -1 s", "positive");
+  CAIRN_EXPECT_THROWS_WITH(ConfidenceToOccupancy(SmallGrid(), kCalibration, 0.1, {}, -0.5), std::invalid_argument,
+                           "offset -0.5 s must be finite and >= 0");
 }
 
 // Source -> matcher -> grid, simulated: the same grid as calling the algorithms frame by frame.

@@ -88,11 +88,13 @@ TEST(AssembleTerrainTest, UnseenGroundIsNotWalkableAndObstaclesBecomeVoxels) {
   // max_ground_height (0.3) blocks bodies.
   for (double z = 0.075; z < 0.6; z += 0.05) Occupy(&grid, Eigen::Vector3d(0.275, 0.275, z), 0.7);
   FrictionPointCloud cloud = Floor(registry, 2.0, "wood", "wood");
-  // No points beyond x = 0.8: the camera did not see that part of the floor.
+  // No points beyond x = 0.8: the camera did not see that part of the floor; nor under the post, which hides it.
   FrictionPointCloud seen;
   std::vector<int> keep;
   for (int i = 0; i < cloud.size(); ++i) {
-    if (cloud.points_W[static_cast<std::size_t>(i)].x() < 0.8) keep.push_back(i);
+    const Eigen::Vector3d& p = cloud.points_W[static_cast<std::size_t>(i)];
+    const bool under_post = p.x() >= 0.25 && p.x() < 0.3 && p.y() >= 0.25 && p.y() < 0.3;
+    if (p.x() < 0.8 && !under_post) keep.push_back(i);
   }
   seen.weights.resize(static_cast<Eigen::Index>(keep.size()), registry.size());
   for (std::size_t k = 0; k < keep.size(); ++k) {
@@ -107,7 +109,8 @@ TEST(AssembleTerrainTest, UnseenGroundIsNotWalkableAndObstaclesBecomeVoxels) {
   TerrainAssemblyOptions trusting;
   trusting.unknown_friction = 0.5;
   EXPECT_DOUBLE_EQ(AssembleTerrain(grid, seen, registry, trusting).friction(18, 2), 0.5);
-  // The post: its ground is its highest cell below 0.3 m, and the six cells above are voxels of probability 0.7.
+  // The post: no point confirms any of its cells, so its ground is its highest cell below 0.3 m, and the six cells
+  // above are voxels of probability 0.7.
   EXPECT_NEAR(terrain.height(5, 5), 0.3, 1e-6);  // heights are stored as float
   ASSERT_EQ(terrain.occupied_voxels().size(), 6u);
   for (const TerrainMap::OccupiedVoxel& v : terrain.occupied_voxels()) {
@@ -176,6 +179,31 @@ TEST(TerrainAssemblerTest, AssemblesItsInputsAndReadsTheRegistryParameter) {
   const TerrainMap& relearned = assembler.get_terrain_output_port().Eval<TerrainMap>(*context);
   EXPECT_LT(relearned.friction(4, 4), 0.2);
   EXPECT_GT(relearned.friction(4, 4), 0.1);
+}
+
+// A single stereo frame leaves stray occupied cells above a floor, and a floor on a layer boundary spreads its
+// points over two layers: the ground is the highest occupied cell the surface's points confirm, its friction
+// comes from all the surface's points, and the stray cell becomes an obstacle voxel.
+TEST(AssembleTerrainTest, TheSurfacePointsConfirmTheGroundCell) {
+  const MaterialRegistry registry = MaterialRegistry::ThesisTable33();
+  OccupancyGrid grid = EmptyGrid();
+  // The floor z = 0 is the boundary of layers 1 ([-0.05, 0)) and 2; occupancy marked layer 2 only.
+  for (int c = 0; c < 20; ++c) {
+    for (int r = 0; r < 10; ++r) Occupy(&grid, Eigen::Vector3d(0.025 + 0.05 * c, 0.025 + 0.05 * r, 0.01), 0.8);
+  }
+  // A stray occupied cell in layer 4 ([0.1, 0.15)) of column (7, 3).
+  Occupy(&grid, Eigen::Vector3d(0.375, 0.175, 0.125), 0.6);
+  FrictionPointCloud cloud = Floor(registry, 2.0, "wood", "wood");
+  // Half of the points 2 mm below the boundary (layer 1), half 2 mm above (layer 2).
+  for (std::size_t i = 0; i < cloud.points_W.size(); ++i) cloud.points_W[i].z() = (i % 2 == 0) ? -0.002 : 0.002;
+  const TerrainMap terrain = AssembleTerrain(grid, cloud, registry);
+  for (int c : {3, 7}) {
+    EXPECT_NEAR(terrain.height(c, 3), 0.0, 0.0021) << c;  // the points' median, not a face of a cell
+    EXPECT_NEAR(terrain.friction(c, 3), Quantile(registry, {{"wood", 1.0}}), 1e-4) << c;
+  }
+  ASSERT_EQ(terrain.occupied_voxels().size(), 1u);
+  EXPECT_TRUE(terrain.occupied_voxels()[0].center.isApprox(Eigen::Vector3d(0.375, 0.175, 0.125), 1e-9));
+  EXPECT_NEAR(terrain.occupied_voxels()[0].probability, 0.6, 1e-6);
 }
 
 }  // namespace

@@ -154,7 +154,9 @@ TEST(WalkDiagramTest, TheStabilisedFlatPlanIsWalkedToItsEndAndTheUnstabilisedOne
 TEST(WalkDiagramTest, RefusesAnIncompleteSetupAnEmptyDiagramAndAForeignSimulator) {
   WalkSetup setup;
   CAIRN_EXPECT_THROWS_WITH(BuildWalkDiagram(setup), std::invalid_argument, "the step cost model is null");
-  CAIRN_EXPECT_THROWS_WITH(RunWalk(WalkDiagram(), WalkRunOptions{0.0, 1.0}), std::invalid_argument,
+  WalkRunOptions no_period;
+  no_period.log_period = 0.0;
+  CAIRN_EXPECT_THROWS_WITH(RunWalk(WalkDiagram(), no_period), std::invalid_argument,
                            "log_period 0 s must be in (0, 1]");
   CAIRN_EXPECT_THROWS_WITH(RunWalk(WalkDiagram()), std::invalid_argument, "the walk diagram is empty",
                            "BuildWalkDiagram()");

@@ -1,0 +1,78 @@
+"""cairn.planning, the main diagram: the scenario as the head camera sees it, the perception in front of the walk,
+and one run from the camera to the plant on thesis 5.2.3's mock-up."""
+
+import math
+
+import numpy as np
+import pytest
+
+import cairn.multibody as mb
+import cairn.perception as perception
+import cairn.planning as planning
+from conftest import source_path
+
+HUMANOID = source_path("data", "robots", "cairn_humanoid.urdf")
+CONTROL = source_path("data", "robots", "cairn_humanoid_control.yaml")
+SEGMENTER = "builtin:" + source_path("data", "models", "builtin_material_segmenter.yaml")
+
+
+def mockup(name="mockup.yaml"):
+    return planning.FootstepScenario.Load(source_path("examples", "scenarios", "mockup", name))
+
+
+def test_the_head_camera_looks_down_along_the_heading():
+    head = planning.HeadCamera()
+    head.height, head.pitch_deg = 1.2, 60.0
+    X_WC = planning.ScenarioCameraPose(mockup().start(), head)
+    np.testing.assert_allclose(X_WC[:3, 3], [0.0, 0.0, 1.2], atol=1e-12)
+    np.testing.assert_allclose(X_WC[:3, 2], [math.cos(math.pi / 3), 0.0, -math.sin(math.pi / 3)], atol=1e-12)
+    head.pitch_deg = 100.0
+    with pytest.raises(ValueError, match=r"pitch_deg must be in \(0, 90\]"):
+        planning.ScenarioCameraPose(mockup().start(), head)
+
+
+def test_the_perception_setup_maps_the_scenario():
+    camera = planning.SyntheticCamera()
+    setup = planning.PerceptionSetupFromScenario(mockup(), camera.Calibration(),
+                                                 perception.MakeMaterialSegmenter(SEGMENTER))
+    assert setup.grid.resolution() == pytest.approx(0.025)
+    np.testing.assert_allclose(setup.grid.min_corner(), [-0.6, -0.9, -0.1], atol=1e-12)
+    assert setup.segmenter is not None and setup.eta == pytest.approx(0.95)
+    with pytest.raises(ValueError, match="max_depth must be in"):
+        planning.PerceptionSetupFromScenario(mockup(), camera.Calibration(),
+                                             perception.MakeMaterialSegmenter(SEGMENTER), 0.1)
+
+
+def test_the_main_diagram_perceives_then_plans_on_what_it_saw(oracle, walking_model):
+    scenario = mockup()
+    options = mb.UrdfOptions()
+    options.floating_base = True
+    robot = mb.ParseUrdfFile(HUMANOID, options)
+    controller = mb.JointPdController.Load(robot, CONTROL)
+    walk = planning.WalkSetupFromScenario(scenario, oracle, walking_model,
+                                          planning.WalkingObjective.kComWorkPlusHeat, robot, controller)
+    walk.planner.search.time_limit = 600.0
+    walk.planner.search.max_expansions = 20000
+    camera = planning.SyntheticCamera()
+    setup = planning.PerceptionSetupFromScenario(scenario, camera.Calibration(),
+                                                 perception.MakeMaterialSegmenter(SEGMENTER))
+    source = planning.ScenarioCamera(scenario, camera, setup.period)
+    main = planning.BuildMainDiagram(walk, setup, source)
+    names = {s.get_name() for s in main.diagram.GetSystems()}
+    assert {"camera", "stereo", "depth", "occupancy", "friction", "terrain_assembler", "footsteps", "plant"} <= names
+    assert source.get_name() == "camera"  # the Python object now views the diagram's block
+    run = planning.WalkRunOptions()
+    run.settle_time = 0.2
+    record = planning.RunMainDiagram(main, run)
+    terrain = record.terrain
+    assert terrain is not None and (terrain.cols(), terrain.rows()) == (96, 72)
+    # The planner read the perceived terrain: the wood ahead at its friction quantile (0.1 in materials.yaml),
+    # lowered a little by the rest of the segmenter's mixture.
+    frictions = [terrain.friction(*terrain.CellAt(x, 0.3)) for x in np.arange(0.3, 1.1, 0.05)]
+    assert 0.05 < float(np.median(frictions)) <= 0.1 + 1e-6
+    # On this mock-up the planner refuses the start (docs/main_diagram.md); a refusal names its stage and
+    # simulates nothing, a walk does not fall.
+    if record.walk.start.ready:
+        assert not record.walk.fell, record.walk.fall_reason
+    else:
+        assert record.walk.start.reason and not record.walk.samples

@@ -1,0 +1,107 @@
+// Runs `cairn run` (the main diagram) and `cairn diagram --scenario` as a user would: the files exist and agree with
+// each other, the steps name the true material under them, and bad input is one line. Whether the robot reaches
+// the goal is the plant's verdict and is asserted in test/planning/run, not here.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../planning/support/shared_oracle.h"
+#include "run_cairn_streams.h"
+#include "test_paths.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using cairn::test::CairnStreams;
+using cairn::test::RunCairnStreams;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+const std::string kCache = std::string(CAIRN_BINARY_DIR) + "/test-oracle-cache";
+const std::string kMockup = std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/mockup/";
+
+std::string Slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+fs::path Folder(const std::string& name) {
+  const fs::path dir = fs::path(CAIRN_BINARY_DIR) / "test-run" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// The mock-up with the box: walk.json says what the camera reconstructed, and the perceived terrain is drawn.
+TEST(RunCommandTest, WritesTheWalkAndThePerceivedTerrain) {
+  cairn::planning::test::SharedOracle(cairn::planning::WalkingObjective::kComWorkPlusHeat);
+  const fs::path out = Folder("obstacle");
+  const CairnStreams run = RunCairnStreams("run --scenario " + kMockup + "mockup_obstacle.yaml --oracle-cache " +
+                                           kCache + " --settle-time 0.3 --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("run        mock-up with an obstacle (objective ecom_heat, stabiliser fft)"));
+  EXPECT_THAT(run.out, HasSubstr("perceived  terrain of 96 x 72 cells"));
+  for (const char* name : {"walk.json", "terrain.png"}) ASSERT_TRUE(fs::exists(out / name)) << name;
+  EXPECT_THAT(Slurp(out / "terrain.png"), StartsWith("\x89PNG"));
+  const nlohmann::json walk = nlohmann::json::parse(Slurp(out / "walk.json"));
+  // Walked or not is the planner's and the plant's verdict (docs/main_diagram.md); not walked names the stage.
+  if (!walk.at("walked").get<bool>()) {
+    EXPECT_FALSE(walk.at("reason").get<std::string>().empty());
+  }
+  const auto& perception = walk.at("perception");
+  EXPECT_EQ(perception.at("cells").get<int>(), 96 * 72);
+  // The camera sees the floor ahead of the robot, not the area behind it.
+  EXPECT_GT(perception.at("ground_cells").get<int>(), 96 * 72 / 3);
+  EXPECT_LT(perception.at("ground_cells").get<int>(), 96 * 72);
+  for (const auto& step : walk.at("steps")) {
+    EXPECT_THAT(step.at("material").get<std::string>(), ::testing::AnyOf("ceramic", "wood")) << step;
+    EXPECT_LE(step.at("predicted_rcof").get<double>(), step.at("mu_allowed").get<double>() + 1e-6) << step;
+  }
+}
+
+TEST(RunCommandTest, DiagramShowsTheMainDiagramOfAScenario) {
+  cairn::planning::test::SharedOracle(cairn::planning::WalkingObjective::kComWorkPlusHeat);
+  const CairnStreams run =
+      RunCairnStreams("diagram --dot --scenario " + kMockup + "mockup.yaml --oracle-cache " + kCache);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("digraph \"main\""));
+  for (const char* block : {"|camera|", "|stereo|", "|occupancy|", "|friction|", "|terrain_assembler|", "|footsteps|",
+                            "|plant|"}) {
+    EXPECT_THAT(run.out, HasSubstr(block));
+  }
+}
+
+TEST(RunCommandTest, RefusesBadInputWithOneLine) {
+  const fs::path dir = Folder("bad");
+  const fs::path ice = dir / "ice.yaml";
+  std::ofstream(ice) << R"(name: ice
+terrain:
+  min: [-0.5, -1.0]
+  max: [1.5, 1.0]
+  regions:
+    - {name: ice, box: {min: [-0.5, -1.0], max: [1.5, 1.0]}, friction: 0.1}
+start: {left: [0.0, 0.1, 0.0], right: [0.0, -0.1, 0.0]}
+goal: {left: [0.4, 0.1, 0.0], right: [0.4, -0.1, 0.0]}
+)";
+  const CairnStreams run = RunCairnStreams("run --scenario " + ice.string() + " --oracle-cache " + kCache);
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(run.err_lines(), 1) << run.err;
+  EXPECT_THAT(run.err, StartsWith("cairn run: "));
+  EXPECT_THAT(run.err, HasSubstr("region 'ice' states a friction, not a material"));
+  const CairnStreams usage = RunCairnStreams("run --scenario " + kMockup + "mockup.yaml --stabilizer lqr");
+  EXPECT_EQ(usage.exit_code, 2) << usage.err;
+  EXPECT_THAT(usage.err, HasSubstr("--stabilizer"));
+  const CairnStreams diagram = RunCairnStreams("diagram --example pendulum --scenario " + ice.string());
+  EXPECT_EQ(diagram.exit_code, 2) << diagram.err;
+  EXPECT_THAT(diagram.err, HasSubstr("--scenario is for the walk and main diagrams"));
+}
+
+}  // namespace

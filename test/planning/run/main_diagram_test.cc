@@ -1,0 +1,224 @@
+// The main diagram (issue 18): the head camera's stereo pair -> geometry and friction -> terrain -> the walk. What
+// the perception makes of thesis 5.2.3's mock-up, and what the plan and the plant do with it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+#include <memory>
+#include <string>
+
+#include <cairn/multibody/urdf_parser.h>
+#include <cairn/perception/friction/make_material_segmenter.h>
+#include <cairn/planning/run/main_diagram.h>
+#include <cairn/planning/run/scenario_stereo_scene.h>
+#include <cairn/systems/primitives/constant_vector_source.h>
+
+#include "../support/shared_oracle.h"
+#include "expect_throws.h"
+#include "test_paths.h"
+
+namespace cairn::planning {
+namespace {
+
+FootstepScenario Mockup(const std::string& name) {
+  return FootstepScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/mockup/" + name);
+}
+
+std::shared_ptr<const perception::MaterialSegmenter> Segmenter() {
+  static const auto segmenter = perception::MakeMaterialSegmenter(
+      "builtin:" + std::string(CAIRN_SOURCE_DIR) + "/data/models/builtin_material_segmenter.yaml");
+  return segmenter;
+}
+
+// The walk of a scenario with the project's humanoid and the shared test oracle, under an expansion budget.
+WalkSetup WalkFor(const FootstepScenario& scenario) {
+  multibody::UrdfOptions urdf;
+  urdf.floating_base = true;
+  const auto robot = std::make_shared<const multibody::Model>(
+      multibody::ParseUrdfFile(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid.urdf", urdf));
+  const auto controller = std::make_shared<const multibody::JointPdController>(multibody::JointPdController::Load(
+      *robot, std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_control.yaml"));
+  WalkSetup setup = WalkSetupFromScenario(scenario, test::SharedOracle(WalkingObjective::kComWorkPlusHeat),
+                                          test::SharedWalkingModel(), WalkingObjective::kComWorkPlusHeat, robot,
+                                          controller);
+  setup.planner.search.time_limit = 600.0;  // the scenarios' wall-clock limit, as a budget of expansions
+  setup.planner.search.max_expansions = 20000;
+  return setup;
+}
+
+MainDiagram Build(const FootstepScenario& scenario) {
+  const SyntheticCamera camera;
+  const PerceptionSetup perception = PerceptionSetupFromScenario(scenario, camera.Calibration(), Segmenter());
+  return BuildMainDiagram(WalkFor(scenario), perception, ScenarioCamera(scenario, camera, perception.period));
+}
+
+// The terrain the planner would read after the first frame (perception only: no planning).
+TerrainMap Perceive(const MainDiagram& main) {
+  const systems::Diagram& diagram = *main.walk.diagram;
+  auto root = diagram.CreateDefaultContext();
+  main.occupancy->ExecuteForcedEvents(&diagram.GetMutableSubsystemContext(*main.occupancy, root.get()));
+  return main.terrain->get_terrain_output_port().Eval<TerrainMap>(diagram.GetSubsystemContext(*main.terrain, *root));
+}
+
+// Over the cells of a rectangle: the share with ground, the median height of those, the share of those that are
+// walkable and the median friction of the walkable ones.
+struct CellSummary {
+  double seen{0.0}, height{0.0}, walkable{0.0}, friction{0.0};
+};
+double Median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+CellSummary Summarise(const TerrainMap& terrain, double x0, double y0, double x1, double y1) {
+  int cells = 0;
+  std::vector<double> heights, frictions;
+  for (int row = 0; row < terrain.rows(); ++row) {
+    for (int col = 0; col < terrain.cols(); ++col) {
+      const Eigen::Vector2d c = terrain.CellCenter(col, row);
+      if (c.x() < x0 || c.x() > x1 || c.y() < y0 || c.y() > y1) continue;
+      ++cells;
+      if (!terrain.has_ground(col, row)) continue;
+      heights.push_back(terrain.height(col, row));
+      if (terrain.walkable(col, row)) frictions.push_back(terrain.friction(col, row));
+    }
+  }
+  CellSummary s;
+  s.seen = cells > 0 ? static_cast<double>(heights.size()) / cells : 0.0;
+  s.walkable = heights.empty() ? 0.0 : static_cast<double>(frictions.size()) / heights.size();
+  s.height = Median(heights);
+  s.friction = Median(frictions);
+  return s;
+}
+
+// Q_{0.05} of a material of the mock-up's registry (materials.yaml: wood 0.10, ceramic 0.40).
+double QuantileOf(const FootstepScenario& scenario, const std::string& label) {
+  const auto& registry = scenario.registry();
+  return registry.material(registry.IndexOf(label)).friction.Quantile(1.0 - scenario.eta());
+}
+
+TEST(PerceptionSetupFromScenarioTest, MapsTheScenarioAreaAndTheCamerasDepths) {
+  const FootstepScenario scenario = Mockup("mockup_obstacle.yaml");
+  const perception::StereoCalibration calibration = SyntheticCamera().Calibration();
+  const PerceptionSetup setup = PerceptionSetupFromScenario(scenario, calibration, Segmenter(), 3.0);
+  ASSERT_NE(setup.grid, nullptr);
+  EXPECT_DOUBLE_EQ(setup.grid->resolution(), 0.025);
+  EXPECT_TRUE(setup.grid->min_corner().isApprox(Eigen::Vector3d(-0.6, -0.9, -0.1), 1e-12));
+  // The grid reaches 1 m above the highest region, covering the scenario's area.
+  EXPECT_GE(setup.grid->resolution() * setup.grid->dims().x(), 2.4 - 1e-9);
+  EXPECT_GE(setup.grid->resolution() * setup.grid->dims().y(), 1.8 - 1e-9);
+  EXPECT_GE(setup.grid->resolution() * setup.grid->dims().z(), 1.1 - 1e-9);
+  // Depths 0.5..3 m are within the matcher's disparities.
+  const double fb = calibration.depth_times_disparity();
+  EXPECT_LE(setup.matcher.cost_volume.min_disparity, fb / 3.0);
+  EXPECT_GE(setup.matcher.cost_volume.max_disparity, fb / 0.5);
+  EXPECT_EQ(setup.registry.material(setup.registry.IndexOf("wood")).friction.a(), 0.3);
+  EXPECT_EQ(setup.eta, 0.95);
+  CAIRN_EXPECT_THROWS_WITH(PerceptionSetupFromScenario(scenario, calibration, nullptr), std::invalid_argument,
+                           "the segmenter is null");
+  CAIRN_EXPECT_THROWS_WITH(PerceptionSetupFromScenario(scenario, calibration, Segmenter(), 0.2),
+                           std::invalid_argument, "max_depth must be in (0.5, 100] m; got 0.2");
+}
+
+TEST(BuildMainDiagramTest, NamesWhatIsMissing) {
+  const FootstepScenario scenario = Mockup("mockup.yaml");
+  const SyntheticCamera camera;
+  const PerceptionSetup perception = PerceptionSetupFromScenario(scenario, camera.Calibration(), Segmenter());
+  const WalkSetup walk = WalkFor(scenario);
+  CAIRN_EXPECT_THROWS_WITH(BuildMainDiagram(walk, perception, nullptr), std::invalid_argument, "the camera is null");
+  auto not_a_camera = std::make_unique<systems::ConstantVectorSource>(Eigen::VectorXd::Zero(1));
+  not_a_camera->set_name("zeros");
+  CAIRN_EXPECT_THROWS_WITH(BuildMainDiagram(walk, perception, std::move(not_a_camera)), std::invalid_argument,
+                           "the camera 'zeros' has no output 'left'");
+  PerceptionSetup no_segmenter = perception;
+  no_segmenter.segmenter = nullptr;
+  CAIRN_EXPECT_THROWS_WITH(BuildMainDiagram(walk, no_segmenter, ScenarioCamera(scenario, camera, 1.0)),
+                           std::invalid_argument, "PerceptionSetup::segmenter is null");
+}
+
+TEST(MainDiagramTest, IsOneDiagramFromTheCameraToThePlant) {
+  const MainDiagram main = Build(Mockup("mockup.yaml"));
+  const std::string dot = main.walk.diagram->GetGraphvizString();
+  for (const char* block : {"camera", "stereo", "depth", "occupancy", "friction", "terrain_assembler", "footsteps",
+                            "trajectory", "stabilizer", "plant"}) {
+    EXPECT_NE(dot.find(block), std::string::npos) << block;
+  }
+  EXPECT_EQ(main.walk.diagram->get_name(), "main");
+}
+
+// What the head camera's first frame makes of the mock-up (measured 2026-12-05, docs/main_diagram.md): the wood is
+// reconstructed everywhere the camera looks, at its height, and nearly all of it is walkable at its friction
+// quantile; the ceramic tiles, nearly textureless between their joints, are reconstructed in part (about 80 %), and
+// only half of what is reconstructed is walkable: the segmenter, right about the label, puts 5 % or more of the
+// rest of its mixture on paper, sand and other non-walkable labels. Behind the camera's view nothing is known.
+TEST(MainDiagramTest, PerceivesTheMockupsGroundAndFriction) {
+  const FootstepScenario scenario = Mockup("mockup.yaml");
+  const TerrainMap terrain = Perceive(Build(scenario));
+  const CellSummary wood = Summarise(terrain, 0.3, 0.15, 1.1, 0.5);
+  const CellSummary tiles = Summarise(terrain, 0.3, -0.5, 1.1, -0.15);
+  std::printf("wood: seen %.2f, height %.3f m, walkable %.2f, friction %.3f; tiles: seen %.2f, height %.3f m, "
+              "walkable %.2f, friction %.3f\n",
+              wood.seen, wood.height, wood.walkable, wood.friction, tiles.seen, tiles.height, tiles.walkable,
+              tiles.friction);
+  EXPECT_GT(wood.seen, 0.95);
+  EXPECT_NEAR(wood.height, 0.001, 0.005);  // the wood's top (1 mm above the tiles, ScenarioStereoScene)
+  EXPECT_GT(wood.walkable, 0.85);
+  EXPECT_NEAR(wood.friction, QuantileOf(scenario, "wood"), 0.03);
+  EXPECT_GT(tiles.seen, 0.5);
+  EXPECT_NEAR(tiles.height, 0.0, 0.005);
+  // Where the tiles are walkable they offer more friction than the wood, and at most the ceramic's own quantile:
+  // the other labels of a fused mixture only lower it.
+  EXPECT_GT(tiles.friction, QuantileOf(scenario, "wood") + 0.1);
+  EXPECT_LE(tiles.friction, QuantileOf(scenario, "ceramic") + 1e-6);
+  EXPECT_LE(wood.friction, QuantileOf(scenario, "wood") + 1e-6);
+  EXPECT_EQ(Summarise(terrain, -0.6, -0.9, -0.4, 0.9).seen, 0.0);  // behind the camera's view
+}
+
+// The cloth is not walkable (materials.yaml): wherever the camera reconstructs it, the terrain says so. The box
+// stands as raised ground where its top is reconstructed.
+TEST(MainDiagramTest, PerceivesTheClothAsNotWalkableAndTheObstacleAsRaisedGround) {
+  const TerrainMap cloth = Perceive(Build(Mockup("mockup_cloth.yaml")));
+  const CellSummary on_cloth = Summarise(cloth, 0.325, -0.375, 0.675, -0.025);
+  std::printf("cloth: seen %.2f, walkable %.2f\n", on_cloth.seen, on_cloth.walkable);
+  EXPECT_GT(on_cloth.seen, 0.05);
+  EXPECT_EQ(on_cloth.walkable, 0.0);
+  const TerrainMap obstacle = Perceive(Build(Mockup("mockup_obstacle.yaml")));
+  const CellSummary on_box = Summarise(obstacle, 0.45, -0.3, 0.6, -0.1);
+  std::printf("box: seen %.2f, height %.3f m\n", on_box.seen, on_box.height);
+  EXPECT_GT(on_box.seen, 0.2);
+  EXPECT_NEAR(on_box.height, 0.12, 0.02);
+}
+
+// Thesis 5.2.3 through the whole diagram, perception included: RunMainDiagram perceives the first frame, hands the
+// assembled terrain to the planner and walks whatever the chain settles on. Measured 2026-12-05 (docs/main_diagram.md):
+// the planner refuses the start, because the perceived cells under the left sole near the wood/tile joint are not
+// walkable (the segmenter puts 5 % or more of their mixture on non-walkable labels), so nothing is walked; that is
+// printed, not asserted. Asserted: the record holds the terrain the planner read, and a chain that settles on no
+// reference says which stage stopped and simulates nothing; one that does walks without a fall.
+TEST(MainDiagramTest, RunsThePerceptionThePlannerAndThePlantAsOneDiagram) {
+  const FootstepScenario scenario = Mockup("mockup.yaml");
+  const MainDiagram main = Build(scenario);
+  WalkRunOptions options;
+  options.settle_time = 0.5;
+  const MainRecord record = RunMainDiagram(main, options);
+  ASSERT_NE(record.terrain, nullptr);
+  EXPECT_EQ(record.terrain->cols(), 96);
+  EXPECT_EQ(record.terrain->rows(), 72);
+  EXPECT_GE(record.perception_seconds, 0.0);
+  const CellSummary wood = Summarise(*record.terrain, 0.3, 0.15, 1.1, 0.5);
+  EXPECT_GT(wood.seen, 0.95);  // the planner read the perceived terrain, not the scenario's
+  std::printf("%s: %s; %zu steps, perception %.2f s\n", scenario.name().c_str(),
+              record.walk.start.ready ? "walked" : record.walk.start.reason.c_str(), record.walk.plan.steps.size(),
+              record.perception_seconds);
+  if (!record.walk.start.ready) {
+    EXPECT_FALSE(record.walk.start.reason.empty());
+    EXPECT_TRUE(record.walk.samples.empty());
+  } else {
+    EXPECT_FALSE(record.walk.fell) << record.walk.fall_reason << " at " << record.walk.duration << " s";
+  }
+}
+
+}  // namespace
+}  // namespace cairn::planning
