@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <cairn/common/number_text.h>
@@ -19,6 +20,62 @@ void Require(bool ok, const char* name, double value, const char* range) {
                                 "; it must be " + range);
   }
 }
+
+// Removes the ground of the cells TerrainAssemblyOptions::outlier_height names, judged on the ground as perceived.
+void RemoveHeightOutliers(int cols, int rows, double res, const TerrainAssemblyOptions& options,
+                          std::vector<double>* height) {
+  const std::vector<double> seen = *height;
+  const int k = std::max(1, static_cast<int>(std::floor(options.outlier_radius / res + 1e-9)));
+  std::vector<double> window;
+  window.reserve(static_cast<std::size_t>((2 * k + 1) * (2 * k + 1)));
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      const std::size_t column = static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c);
+      if (std::isnan(seen[column])) continue;
+      window.clear();
+      for (int rr = std::max(0, r - k); rr <= std::min(rows - 1, r + k); ++rr) {
+        for (int cc = std::max(0, c - k); cc <= std::min(cols - 1, c + k); ++cc) {
+          const double h = seen[static_cast<std::size_t>(rr) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(cc)];
+          if (!std::isnan(h)) window.push_back(h);
+        }
+      }
+      const auto middle = window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2);
+      std::nth_element(window.begin(), middle, window.end());
+      if (std::abs(seen[column] - *middle) > options.outlier_height) (*height)[column] = std::nan("");
+    }
+  }
+}
+
+// Bridges the gaps of TerrainAssemblyOptions::max_gap in place. Every gap cell is decided on the ground as
+// perceived (bridged cells do not bridge further), along the axis whose two sides lie closer together.
+void BridgeGaps(int cols, int rows, double res, const TerrainAssemblyOptions& options, std::vector<double>* height,
+                std::vector<double>* friction) {
+  const std::vector<double> seen_height = *height;
+  const std::vector<double> seen_friction = *friction;
+  const int reach = static_cast<int>(std::floor(options.max_gap / res + 1e-9));
+  auto index = [cols](int c, int r) { return static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c); };
+  auto has = [&](int c, int r) { return c >= 0 && r >= 0 && c < cols && r < rows && !std::isnan(seen_height[index(c, r)]); };
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      if (has(c, r)) continue;
+      int best_span = reach + 2;
+      for (const auto& [dc, dr] : {std::pair<int, int>{1, 0}, {0, 1}}) {
+        int a = 1, b = 1;
+        while (a <= reach && !has(c - a * dc, r - a * dr)) ++a;
+        while (b <= reach && !has(c + b * dc, r + b * dr)) ++b;
+        // The gap between the two ground cells is a + b - 1 cells wide.
+        if (a > reach || b > reach || a + b - 1 > reach || a + b >= best_span) continue;
+        const std::size_t lo = index(c - a * dc, r - a * dr), hi = index(c + b * dc, r + b * dr);
+        if (std::abs(seen_height[hi] - seen_height[lo]) > options.max_gap_step) continue;
+        best_span = a + b;
+        const double t = static_cast<double>(a) / (a + b);
+        (*height)[index(c, r)] = (1.0 - t) * seen_height[lo] + t * seen_height[hi];
+        (*friction)[index(c, r)] = std::min(seen_friction[lo], seen_friction[hi]);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void ValidateTerrainAssemblyOptions(const TerrainAssemblyOptions& o) {
@@ -27,6 +84,11 @@ void ValidateTerrainAssemblyOptions(const TerrainAssemblyOptions& o) {
   Require(std::isfinite(o.max_ground_height), "max_ground_height", o.max_ground_height, "finite (world z, m)");
   Require(o.eta > 0.0 && o.eta < 1.0, "eta", o.eta, "in (0, 1)");
   Require(o.min_points >= 1 && o.min_points <= 1000000, "min_points", o.min_points, "in [1, 1000000]");
+  Require(o.outlier_height >= 0.0 && o.outlier_height <= 10.0, "outlier_height", o.outlier_height,
+          "in [0, 10] m (0: keep every cell)");
+  Require(o.outlier_radius > 0.0 && o.outlier_radius <= 1.0, "outlier_radius", o.outlier_radius, "in (0, 1] m");
+  Require(o.max_gap >= 0.0 && o.max_gap <= 10.0, "max_gap", o.max_gap, "in [0, 10] m (0: bridge no gap)");
+  Require(o.max_gap_step >= 0.0 && o.max_gap_step <= 1.0, "max_gap_step", o.max_gap_step, "in [0, 1] m");
   Require(o.unknown_friction >= 0.0 && o.unknown_friction <= 10.0, "unknown_friction", o.unknown_friction,
           "in [0, 10] (0: not walkable)");
 }
@@ -79,11 +141,16 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
   // leaves cells a few centimetres above the floor occupied by mismatches: the points, which lie on the surface
   // itself, tell the floor from those (measured on the mock-up's floor: without them half of the wood's cells had
   // no friction and some stood 5-7.5 cm high). The cells above the ground stay obstacles below, with their
-  // probability. Per column: the ground layer, its points' heights and summed mixtures.
+  // probability. Per column: the ground layer, its points' heights and summed mixtures (or summed log mixtures:
+  // kIndependent's product, kept in logs so that a hundred points do not underflow).
   std::vector<int> ground_layer(columns, -1);
   std::vector<std::vector<float>> heights(columns);
   Eigen::MatrixXd mixture = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(columns), labels);
   std::vector<int> count(columns, 0);
+  const bool independent = options.fusion == MaterialFusion::kIndependent;
+  // A label one point gives no mass at all still keeps this much of it: a single zero must not veto a label that
+  // every other point supports.
+  constexpr double kMinWeight = 1e-9;
   auto near = [](int layer, int ground) { return layer >= ground - 1 && layer <= ground + 1; };
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
@@ -104,7 +171,14 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
         if (!near(located[j].layer, ground)) continue;
         const int i = located[j].index;
         heights[column].push_back(static_cast<float>(points.points_W[static_cast<std::size_t>(i)].z()));
-        mixture.row(static_cast<Eigen::Index>(column)) += points.weights.row(i).cast<double>();
+        if (independent) {
+          for (int l = 0; l < labels; ++l) {
+            mixture(static_cast<Eigen::Index>(column), l) +=
+                std::log(std::max(static_cast<double>(points.weights(i, l)), kMinWeight));
+          }
+        } else {
+          mixture.row(static_cast<Eigen::Index>(column)) += points.weights.row(i).cast<double>();
+        }
         ++count[column];
       }
     }
@@ -134,22 +208,26 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
     if (!std::isnan(behind)) return (here - behind) / res;
     return 0.0;
   };
+  std::vector<double> friction(columns, options.unknown_friction);
   Eigen::VectorXd weights(labels);
+  for (std::size_t column = 0; column < columns; ++column) {
+    if (std::isnan(height[column]) || count[column] < options.min_points) continue;
+    weights = mixture.row(static_cast<Eigen::Index>(column)).transpose();
+    if (independent) weights = (weights.array() - weights.maxCoeff()).exp().matrix();
+    const double total = weights.sum();
+    if (total > 0.0) {
+      weights /= total;
+      friction[column] = perception::FrictionQuantile(registry, weights, options.eta, options.quantile_method);
+    }
+  }
+  if (options.outlier_height > 0.0) RemoveHeightOutliers(cols, rows, res, options, &height);
+  if (options.max_gap > 0.0) BridgeGaps(cols, rows, res, options, &height, &friction);
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
       const std::size_t column = static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c);
       if (std::isnan(height[column])) continue;
       const Eigen::Vector3d normal = Eigen::Vector3d(-slope(c, r, 1, 0), -slope(c, r, 0, 1), 1.0).normalized();
-      double friction = options.unknown_friction;
-      if (count[column] >= options.min_points) {
-        weights = mixture.row(static_cast<Eigen::Index>(column)).transpose();
-        const double total = weights.sum();
-        if (total > 0.0) {
-          weights /= total;
-          friction = perception::FrictionQuantile(registry, weights, options.eta, options.quantile_method);
-        }
-      }
-      terrain.SetCell(c, r, height[column], normal, friction);
+      terrain.SetCell(c, r, height[column], normal, friction[column]);
     }
   }
 

@@ -8,6 +8,20 @@
 
 namespace cairn::planning {
 
+/// How a ground cell's friction points' material mixtures become the cell's one mixture.
+enum class MaterialFusion {
+  /// The mean of the points' mixtures (a linear opinion pool): what the points say on average. Conservative: a
+  /// segmenter that leaves 5 % of every pixel's mass on non-walkable labels leaves it on the cell too, and at
+  /// eta = 0.95 that makes its quantile 0.
+  kAverage,
+  /// Each point an independent observation of the cell's one material (the recursive Bayesian update of semantic
+  /// mapping, e.g. SemanticFusion): the cell's mixture is the normalised product of the points' mixtures, under a
+  /// uniform prior over the labels. Evidence that agrees sharpens the mixture; a cell where two materials meet
+  /// keeps both. Overconfident where the points are not independent (neighbouring pixels share a segmenter's
+  /// window, so a label it gets wrong over a whole patch is wrong with certainty).
+  kIndependent,
+};
+
 /// How AssembleTerrain reads the occupancy grid and the friction points.
 struct TerrainAssemblyOptions {
   /// Occupancy cells with a probability above this are surfaces or obstacles (0.5: any evidence of occupation).
@@ -19,6 +33,23 @@ struct TerrainAssemblyOptions {
   /// FrictionEstimator's eta).
   double eta{0.95};
   perception::QuantileMethod quantile_method{perception::QuantileMethod::kExact};
+  /// How a cell's points' material mixtures are fused before the quantile is taken.
+  MaterialFusion fusion{MaterialFusion::kAverage};
+  /// A ground cell whose height differs from the median height of the ground within `outlier_radius` (m, a square
+  /// window) by more than `outlier_height` (m) loses its ground: a single frame's stereo mismatches on a surface
+  /// without texture leave cells centimetres above or below it (measured on the mock-up's tiles: from -5 to +6 cm).
+  /// The gaps this leaves may be bridged (max_gap). 0 (the default) keeps every cell; an edge narrower than the
+  /// window (a kerb seen by only a few cells) is lost with it, so keep the window small.
+  double outlier_height{0.0};
+  double outlier_radius{0.05};
+  /// Widest gap in the ground (m) to bridge, as a surface mesh over the points would (thesis 5.2.3 meshes its
+  /// point cloud): a column without ground whose nearest ground cells on two opposite sides (along x or along y),
+  /// at most this far apart, stand within `max_gap_step` of each other gets ground interpolated between them, with
+  /// the lower of their two frictions. Stereo leaves such gaps where a surface has no texture (the mock-up's tile
+  /// faces); a real hole that narrow would be bridged too, so 0 (the default) bridges nothing.
+  double max_gap{0.0};
+  /// Largest height difference (m) between the two sides of a gap that may be bridged.
+  double max_gap_step{0.01};
   /// Friction points a ground cell needs before its friction is known.
   int min_points{1};
   /// Friction of a ground cell with fewer than min_points points: 0 (the default) makes it not walkable, so the
@@ -40,10 +71,12 @@ void ValidateTerrainAssemblyOptions(const TerrainAssemblyOptions& options);
 /// ground. The surface's points are those within one layer of the ground cell; its height is their median z (the
 /// surface itself, not the cell's quantised face), or the cell's top face when there are none.
 ///
-/// Friction: the material mixture weights of the ground surface's points are averaged (the mixture of the
-/// points' mixtures), and the cell's friction is that mixture's Q_{1-eta} under `registry` (FrictionQuantile):
-/// the quantile of the fused distribution, not a mean of the points' quantiles, which would be optimistic for a
-/// cell where two materials meet. A cell with fewer than min_points points gets unknown_friction.
+/// Friction: the material mixture weights of the ground surface's points are fused (`fusion`: averaged, or
+/// multiplied as independent observations), and the cell's friction is that mixture's Q_{1-eta} under `registry`
+/// (FrictionQuantile): the quantile of the fused distribution, not a mean of the points' quantiles, which would be
+/// optimistic for a cell where two materials meet. A cell with fewer than min_points points gets unknown_friction.
+///
+/// Outliers and gaps: see outlier_height and max_gap; a bridged cell's normal comes from the height field like any other's.
 ///
 /// Obstacles: every occupied cell above its column's ground cell (all of them in a column without ground; an
 /// unconfirmed cell above the surface too, e.g. a stereo mismatch) becomes an occupied voxel of the map with its

@@ -66,10 +66,10 @@ def test_the_main_diagram_perceives_then_plans_on_what_it_saw(oracle, walking_mo
     record = planning.RunMainDiagram(main, run)
     terrain = record.terrain
     assert terrain is not None and (terrain.cols(), terrain.rows()) == (96, 72)
-    # The planner read the perceived terrain: the wood ahead at its friction quantile (0.1 in materials.yaml),
-    # lowered a little by the rest of the segmenter's mixture.
+    # The planner read the perceived terrain: the wood ahead at its friction quantile (materials.yaml: N(0.3, 0.12),
+    # Q_0.05 = 0.103), the points of a cell fused as independent looks at its material.
     frictions = [terrain.friction(*terrain.CellAt(x, 0.3)) for x in np.arange(0.3, 1.1, 0.05)]
-    assert 0.05 < float(np.median(frictions)) <= 0.1 + 1e-6
+    assert float(np.median(frictions)) == pytest.approx(0.3 - 1.6449 * 0.12, abs=0.005)
     # On this mock-up the planner refuses the start (docs/main_diagram.md); a refusal names its stage and
     # simulates nothing, a walk does not fall.
     if record.walk.start.ready:

@@ -149,10 +149,10 @@ TEST(MainDiagramTest, IsOneDiagramFromTheCameraToThePlant) {
 }
 
 // What the head camera's first frame makes of the mock-up (measured 2026-12-05, docs/main_diagram.md): the wood is
-// reconstructed everywhere the camera looks, at its height, and nearly all of it is walkable at its friction
-// quantile; the ceramic tiles, nearly textureless between their joints, are reconstructed in part (about 80 %), and
-// only half of what is reconstructed is walkable: the segmenter, right about the label, puts 5 % or more of the
-// rest of its mixture on paper, sand and other non-walkable labels. Behind the camera's view nothing is known.
+// reconstructed everywhere the camera looks, at its height, and all of it is walkable at its friction quantile; the
+// ceramic tiles, nearly textureless between their joints, are reconstructed in part (about 75 % once the cells a
+// mismatch put centimetres off the floor are dropped), and nearly all of that is walkable at the ceramic's quantile
+// (the points of a cell fused as independent looks at its material). Behind the camera's view nothing is known.
 TEST(MainDiagramTest, PerceivesTheMockupsGroundAndFriction) {
   const FootstepScenario scenario = Mockup("mockup.yaml");
   const TerrainMap terrain = Perceive(Build(scenario));
@@ -164,15 +164,12 @@ TEST(MainDiagramTest, PerceivesTheMockupsGroundAndFriction) {
               tiles.friction);
   EXPECT_GT(wood.seen, 0.95);
   EXPECT_NEAR(wood.height, 0.001, 0.005);  // the wood's top (1 mm above the tiles, ScenarioStereoScene)
-  EXPECT_GT(wood.walkable, 0.85);
+  EXPECT_GT(wood.walkable, 0.95);
   EXPECT_NEAR(wood.friction, QuantileOf(scenario, "wood"), 0.03);
   EXPECT_GT(tiles.seen, 0.5);
+  EXPECT_GT(tiles.walkable, 0.85);
   EXPECT_NEAR(tiles.height, 0.0, 0.005);
-  // Where the tiles are walkable they offer more friction than the wood, and at most the ceramic's own quantile:
-  // the other labels of a fused mixture only lower it.
-  EXPECT_GT(tiles.friction, QuantileOf(scenario, "wood") + 0.1);
-  EXPECT_LE(tiles.friction, QuantileOf(scenario, "ceramic") + 1e-6);
-  EXPECT_LE(wood.friction, QuantileOf(scenario, "wood") + 1e-6);
+  EXPECT_NEAR(tiles.friction, QuantileOf(scenario, "ceramic"), 0.01);
   EXPECT_EQ(Summarise(terrain, -0.6, -0.9, -0.4, 0.9).seen, 0.0);  // behind the camera's view
 }
 
@@ -193,9 +190,9 @@ TEST(MainDiagramTest, PerceivesTheClothAsNotWalkableAndTheObstacleAsRaisedGround
 
 // Thesis 5.2.3 through the whole diagram, perception included: RunMainDiagram perceives the first frame, hands the
 // assembled terrain to the planner and walks whatever the chain settles on. Measured 2026-12-05 (docs/main_diagram.md):
-// the planner refuses the start, because the perceived cells under the left sole near the wood/tile joint are not
-// walkable (the segmenter puts 5 % or more of their mixture on non-walkable labels), so nothing is walked; that is
-// printed, not asserted. Asserted: the record holds the terrain the planner read, and a chain that settles on no
+// the planner refuses the start, because the right sole's front edge lies over tiles the single frame did not
+// reconstruct, so nothing is walked; that is printed, not asserted (and with the start granted, every plan would
+// need more friction than the wood's perceived cells give: the ground-truth plan uses all of the wood's 0.103). Asserted: the record holds the terrain the planner read, and a chain that settles on no
 // reference says which stage stopped and simulates nothing; one that does walks without a fall.
 TEST(MainDiagramTest, RunsThePerceptionThePlannerAndThePlantAsOneDiagram) {
   const FootstepScenario scenario = Mockup("mockup.yaml");

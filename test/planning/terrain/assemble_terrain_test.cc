@@ -206,5 +206,148 @@ TEST(AssembleTerrainTest, TheSurfacePointsConfirmTheGroundCell) {
   EXPECT_NEAR(terrain.occupied_voxels()[0].probability, 0.6, 1e-6);
 }
 
+// A floor over every column of EmptyGrid at z = 0 (layer 2) and its points: 1 cm apart, each of mixture `mixture`.
+OccupancyGrid FlatGrid() {
+  OccupancyGrid grid = EmptyGrid();
+  for (int c = 0; c < 20; ++c) {
+    for (int r = 0; r < 10; ++r) Occupy(&grid, Eigen::Vector3d(0.025 + 0.05 * c, 0.025 + 0.05 * r, 0.01), 0.8);
+  }
+  return grid;
+}
+void SetMixture(const MaterialRegistry& registry, FrictionPointCloud* cloud, int point,
+                const std::vector<std::pair<std::string, float>>& mixture) {
+  cloud->weights.row(point).setZero();
+  for (const auto& [label, weight] : mixture) cloud->weights(point, registry.IndexOf(label)) = weight;
+}
+
+// A calibrated segmenter that is right about ceramic but leaves 6 % of each pixel on paper: averaged, the cell
+// keeps 6 % at friction 0, and at eta = 0.95 its quantile is 0; fused as independent looks, agreeing points
+// sharpen the mixture to ceramic. Points that disagree (a cell where wood meets ceramic) keep both labels.
+TEST(AssembleTerrainTest, IndependentFusionSharpensAgreeingPointsAndKeepsDisagreement) {
+  const MaterialRegistry registry = MaterialRegistry::ThesisTable33();
+  FrictionPointCloud cloud = Floor(registry, 2.0, "wood", "wood");
+  for (int i = 0; i < cloud.size(); ++i) {
+    const Eigen::Vector3d& p = cloud.points_W[static_cast<std::size_t>(i)];
+    if (p.x() < 0.5) {
+      SetMixture(registry, &cloud, i, {{"ceramic", 0.94f}, {"paper", 0.06f}});
+    } else {
+      // Column 12 (x in [0.6, 0.65)): wood and ceramic points alternate, each 90 % sure.
+      const bool wood = static_cast<int>(std::lround(p.y() * 100.0 - 0.5)) % 2 == 0;
+      SetMixture(registry, &cloud, i, {{wood ? "wood" : "ceramic", 0.9f}, {wood ? "ceramic" : "wood", 0.1f}});
+    }
+  }
+  const TerrainMap averaged = AssembleTerrain(FlatGrid(), cloud, registry);
+  EXPECT_EQ(averaged.friction(3, 4), 0.0);
+  TerrainAssemblyOptions options;
+  options.fusion = MaterialFusion::kIndependent;
+  const TerrainMap fused = AssembleTerrain(FlatGrid(), cloud, registry, options);
+  EXPECT_NEAR(fused.friction(3, 4), Quantile(registry, {{"ceramic", 1.0}}), 1e-4);
+  // 25 points per cell, 13 or 12 of each kind: the product leaves about 90/10 between the two materials.
+  const double both = fused.friction(12, 4);
+  EXPECT_GT(both, Quantile(registry, {{"wood", 1.0}}) - 1e-4);
+  EXPECT_LT(both, Quantile(registry, {{"ceramic", 1.0}}) - 0.05);
+  // A label some point gives no mass at all is not vetoed by it.
+  SetMixture(registry, &cloud, 0, {{"paper", 1.0f}});
+  EXPECT_NEAR(AssembleTerrain(FlatGrid(), cloud, registry, options).friction(0, 0),
+              Quantile(registry, {{"ceramic", 1.0}}), 1e-4);
+}
+
+// A single frame's mismatch leaves a cell 5 cm above a level floor: with outlier_height it loses its ground,
+// while the floor around it, a real 10 cm step of five cells and its edge, keep theirs.
+TEST(AssembleTerrainTest, HeightOutliersLoseTheirGround) {
+  const MaterialRegistry registry = MaterialRegistry::ThesisTable33();
+  OccupancyGrid grid = FlatGrid();
+  FrictionPointCloud cloud = Floor(registry, 2.0, "wood", "wood");
+  for (std::size_t i = 0; i < cloud.points_W.size(); ++i) {
+    Eigen::Vector3d& p = cloud.points_W[i];
+    if (p.x() >= 0.25 && p.x() < 0.3 && p.y() >= 0.25 && p.y() < 0.3) p.z() = 0.05;  // column (5, 5)
+    if (p.x() >= 0.75) p.z() = 0.1;  // columns 15..19: a step
+  }
+  Occupy(&grid, Eigen::Vector3d(0.275, 0.275, 0.06), 0.8);
+  for (int c = 15; c < 20; ++c) {
+    for (int r = 0; r < 10; ++r) Occupy(&grid, Eigen::Vector3d(0.025 + 0.05 * c, 0.025 + 0.05 * r, 0.11), 0.8);
+  }
+  EXPECT_NEAR(AssembleTerrain(grid, cloud, registry).height(5, 5), 0.05, 1e-6);
+  TerrainAssemblyOptions options;
+  options.outlier_height = 0.02;
+  options.outlier_radius = 0.1;  // 5 x 5 cells
+  const TerrainMap terrain = AssembleTerrain(grid, cloud, registry, options);
+  EXPECT_FALSE(terrain.has_ground(5, 5));
+  for (int c : {4, 6, 14, 15, 19}) {
+    ASSERT_TRUE(terrain.has_ground(c, 5)) << c;
+  }
+  EXPECT_NEAR(terrain.height(15, 5), 0.1, 1e-6);
+  EXPECT_NEAR(terrain.height(14, 5), 0.0, 1e-6);
+}
+
+// Stereo leaves gaps where a surface has no texture: max_gap bridges those between level ground, with the lower
+// friction of the two sides, and leaves wider gaps and gaps across a step as they are.
+TEST(AssembleTerrainTest, BridgesNarrowGapsBetweenLevelGround) {
+  const MaterialRegistry registry = MaterialRegistry::ThesisTable33();
+  OccupancyGrid grid = EmptyGrid();
+  FrictionPointCloud all = Floor(registry, 0.3, "wood", "ceramic");
+  for (std::size_t i = 0; i < all.points_W.size(); ++i) {
+    if (all.points_W[i].x() >= 0.8) all.points_W[i].z() = 0.05;  // columns 16..19 stand 5 cm higher
+  }
+  // Ground everywhere except: columns 6..7 of rows 2..3 (a hole 10 cm across, between wood in column 5 and
+  // ceramic in 8), columns 10..13 of row 6 (20 cm long, 5 cm wide) and column 15 of row 8 (between the floor
+  // and the higher columns).
+  auto gap = [](int c, int r) {
+    return ((r == 2 || r == 3) && (c == 6 || c == 7)) || (r == 6 && c >= 10 && c <= 13) || (r == 8 && c == 15);
+  };
+  std::vector<int> keep;
+  for (int i = 0; i < all.size(); ++i) {
+    const Eigen::Vector3d& p = all.points_W[static_cast<std::size_t>(i)];
+    const int c = static_cast<int>(p.x() / 0.05), r = static_cast<int>(p.y() / 0.05);
+    if (!gap(c, r)) keep.push_back(i);
+  }
+  FrictionPointCloud cloud;
+  cloud.weights.resize(static_cast<Eigen::Index>(keep.size()), registry.size());
+  for (std::size_t k = 0; k < keep.size(); ++k) {
+    cloud.points_W.push_back(all.points_W[static_cast<std::size_t>(keep[k])]);
+    cloud.quantiles.push_back(0.0f);
+    cloud.weights.row(static_cast<Eigen::Index>(k)) = all.weights.row(keep[k]);
+  }
+  for (int c = 0; c < 20; ++c) {
+    for (int r = 0; r < 10; ++r) {
+      if (!gap(c, r)) Occupy(&grid, Eigen::Vector3d(0.025 + 0.05 * c, 0.025 + 0.05 * r, c >= 16 ? 0.06 : 0.01), 0.8);
+    }
+  }
+  EXPECT_FALSE(AssembleTerrain(grid, cloud, registry).has_ground(6, 2));
+  TerrainAssemblyOptions options;
+  options.max_gap = 0.1;
+  const TerrainMap terrain = AssembleTerrain(grid, cloud, registry, options);
+  for (int c : {6, 7}) {
+    ASSERT_TRUE(terrain.has_ground(c, 2)) << c;
+    EXPECT_NEAR(terrain.height(c, 2), 0.0, 1e-6);
+    EXPECT_NEAR(terrain.friction(c, 2), Quantile(registry, {{"wood", 1.0}}), 1e-4);
+  }
+  // Row 6's gap is 20 cm along x, but each of its cells has ground 5 cm away above and below (rows 5 and 7).
+  EXPECT_TRUE(terrain.has_ground(11, 6));
+  EXPECT_NEAR(terrain.friction(11, 6), Quantile(registry, {{"ceramic", 1.0}}), 1e-4);
+  // Column 15 of row 8: the floor at 0 on one side and 5 cm higher on the other along x; rows 7 and 9 are level
+  // with it, so it is bridged along y.
+  EXPECT_NEAR(terrain.height(15, 8), 0.0, 1e-6);
+  options.max_gap_step = 0.0;
+  options.max_gap = 0.05;
+  EXPECT_TRUE(AssembleTerrain(grid, cloud, registry, options).has_ground(11, 6));
+  EXPECT_FALSE(AssembleTerrain(grid, cloud, registry, options).has_ground(6, 2));  // 10 cm wide: too wide
+}
+
+TEST(AssembleTerrainTest, RejectsBadGapAndOutlierOptions) {
+  const MaterialRegistry registry = MaterialRegistry::ThesisTable33();
+  TerrainAssemblyOptions options;
+  options.max_gap = -0.1;
+  CAIRN_EXPECT_THROWS_WITH(TerrainAssembler(registry, options), std::invalid_argument,
+                           "max_gap is -0.1; it must be in [0, 10] m (0: bridge no gap)");
+  options = TerrainAssemblyOptions();
+  options.outlier_radius = 0.0;
+  CAIRN_EXPECT_THROWS_WITH(TerrainAssembler(registry, options), std::invalid_argument,
+                           "outlier_radius is 0; it must be in (0, 1] m");
+  options = TerrainAssemblyOptions();
+  options.outlier_height = std::nan("");
+  CAIRN_EXPECT_THROWS_WITH(TerrainAssembler(registry, options), std::invalid_argument, "outlier_height is nan");
+}
+
 }  // namespace
 }  // namespace cairn::planning
