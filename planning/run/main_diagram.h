@@ -3,18 +3,7 @@
 #include <memory>
 #include <string>
 
-#include <cairn/perception/friction/friction_estimator.h>
-#include <cairn/perception/friction/material_registry.h>
-#include <cairn/perception/friction/material_segmenter.h>
-#include <cairn/perception/occupancy/confidence_to_occupancy.h>
-#include <cairn/perception/occupancy/cost_curve_sensor_model.h>
-#include <cairn/perception/occupancy/occupancy_grid.h>
-#include <cairn/perception/stereo/disparity_to_depth.h>
-#include <cairn/perception/stereo/stereo_calibration.h>
-#include <cairn/perception/stereo/stereo_matcher.h>
-#include <cairn/planning/scenarios/footstep_scenario.h>
-#include <cairn/planning/terrain/assemble_terrain.h>
-#include <cairn/planning/terrain/terrain_assembler.h>
+#include <cairn/planning/run/perception_diagram.h>
 #include <cairn/planning/walk/walk_diagram.h>
 #include <cairn/planning/walk/walk_run.h>
 #include <cairn/systems/analysis/simulator.h>
@@ -22,35 +11,6 @@
 #include <cairn/systems/framework/leaf_system.h>
 
 namespace cairn::planning {
-
-/// How the main diagram perceives: the camera's intrinsics, stereo matching, the occupancy grid it fuses into,
-/// friction from vision and the terrain assembled from both.
-struct PerceptionSetup {
-  perception::StereoCalibration calibration;        ///< the camera's (left) intrinsics and baseline
-  perception::StereoMatcher::Options matcher;
-  perception::DisparityToDepthOptions depth;        ///< which disparities become friction points
-  /// The grid's extent and resolution (its prototype: usually all unknown); its horizontal cells become the
-  /// planner's terrain cells, so 2.5 cm suits the footstep lattice.
-  std::shared_ptr<const perception::OccupancyGrid> grid;
-  perception::CostCurveSensorModel::Options occupancy;
-  /// Seconds between the frames fused after the first; the first is fused before planning (InitializeMainDiagram).
-  double period{1.0};
-  perception::MaterialRegistry registry{perception::MaterialRegistry::ThesisTable33()};
-  std::shared_ptr<const perception::MaterialSegmenter> segmenter;  ///< required
-  double eta{0.95};                                 ///< the friction chance constraint's level (FrictionEstimator's and the terrain's)
-  int num_threads{0};                               ///< the friction estimator's (0: one per core)
-  TerrainAssemblyOptions terrain;                   ///< its eta is set from `eta`
-};
-
-/// Perception for a footstep scenario seen by a camera of `calibration`: an unknown occupancy grid over the
-/// scenario's mapped area at its raster resolution (at least 2.5 cm), from 10 cm below its lowest region to 1 m
-/// above its highest (obstacles the body could meet); the scenario's material registry and eta; the matcher's
-/// disparity range covering depths from 0.5 m to `max_depth`. Throws std::invalid_argument for a null segmenter or
-/// a grid above OccupancyGrid's cell limit.
-PerceptionSetup PerceptionSetupFromScenario(const FootstepScenario& scenario,
-                                            const perception::StereoCalibration& calibration,
-                                            std::shared_ptr<const perception::MaterialSegmenter> segmenter,
-                                            double max_depth = 4.0);
 
 /// The main diagram (DESIGN.md 3.6, thesis Fig. 5.1): perception in front of the walk.
 ///

@@ -141,13 +141,15 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
   // leaves cells a few centimetres above the floor occupied by mismatches: the points, which lie on the surface
   // itself, tell the floor from those (measured on the mock-up's floor: without them half of the wood's cells had
   // no friction and some stood 5-7.5 cm high). The cells above the ground stay obstacles below, with their
-  // probability. Per column: the ground layer, its points' heights and summed mixtures (or summed log mixtures:
-  // kIndependent's product, kept in logs so that a hundred points do not underflow).
+  // probability. Per column: the ground layer, its points' heights and summed mixtures (or, for kIndependent, the
+  // product of the mixtures, rescaled whenever its largest entry falls below 1e-200 so that it cannot underflow).
   std::vector<int> ground_layer(columns, -1);
   std::vector<std::vector<float>> heights(columns);
-  Eigen::MatrixXd mixture = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(columns), labels);
-  std::vector<int> count(columns, 0);
   const bool independent = options.fusion == MaterialFusion::kIndependent;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> mixture =
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>::Constant(
+          static_cast<Eigen::Index>(columns), labels, independent ? 1.0 : 0.0);
+  std::vector<int> count(columns, 0);
   // A label one point gives no mass at all still keeps this much of it: a single zero must not veto a label that
   // every other point supports.
   constexpr double kMinWeight = 1e-9;
@@ -172,9 +174,14 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
         const int i = located[j].index;
         heights[column].push_back(static_cast<float>(points.points_W[static_cast<std::size_t>(i)].z()));
         if (independent) {
+          double* m = mixture.row(static_cast<Eigen::Index>(column)).data();
+          double largest = 0.0;
           for (int l = 0; l < labels; ++l) {
-            mixture(static_cast<Eigen::Index>(column), l) +=
-                std::log(std::max(static_cast<double>(points.weights(i, l)), kMinWeight));
+            m[l] *= std::max(static_cast<double>(points.weights(i, l)), kMinWeight);
+            largest = std::max(largest, m[l]);
+          }
+          if (largest < 1e-200) {
+            for (int l = 0; l < labels; ++l) m[l] /= largest;
           }
         } else {
           mixture.row(static_cast<Eigen::Index>(column)) += points.weights.row(i).cast<double>();
@@ -213,7 +220,6 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
   for (std::size_t column = 0; column < columns; ++column) {
     if (std::isnan(height[column]) || count[column] < options.min_points) continue;
     weights = mixture.row(static_cast<Eigen::Index>(column)).transpose();
-    if (independent) weights = (weights.array() - weights.maxCoeff()).exp().matrix();
     const double total = weights.sum();
     if (total > 0.0) {
       weights /= total;
