@@ -20,6 +20,7 @@
 #include "choice_option.h"
 #include "command_registry.h"
 #include "data_directory.h"
+#include "report_drawing.h"
 #include "file_checks.h"
 #include "numeric_option.h"
 #include "quiet_stderr.h"
@@ -43,13 +44,6 @@ struct FrictionArguments {
   std::string method{"exact"};
   std::string out;
   bool json{false};
-};
-
-// The label image's palette: label i gets colour kPalette[i % size] (BGR), unknown pixels black. Chosen for
-// contrast between neighbouring labels of the thesis' list.
-const cv::Vec3b kPalette[] = {
-    {128, 128, 128}, {0, 160, 0},   {60, 90, 120},  {160, 0, 160}, {230, 230, 230}, {200, 200, 255}, {200, 160, 60},
-    {30, 90, 170},   {120, 200, 230}, {255, 200, 120}, {255, 255, 255}, {200, 80, 0}, {0, 0, 200},    {80, 220, 220},
 };
 
 // The files `--out` holds; the folder is replaced as a whole (AtomicOutputDirectory).
@@ -118,7 +112,7 @@ int Run(const FrictionArguments& args) {
         if (in[c * segmenter->num_labels() + k] > in[c * segmenter->num_labels() + best]) best = k;
       }
       const int label = channel_to_registry[best];
-      labels.at<cv::Vec3b>(r, c) = kPalette[label % (sizeof(kPalette) / sizeof(kPalette[0]))];
+      labels.at<cv::Vec3b>(r, c) = MaterialColour(label);
       label_fraction[label] += 1.0;
     }
   }
@@ -152,7 +146,7 @@ int Run(const FrictionArguments& args) {
   for (int i = 0; i < n; ++i) writer.Key(registry.material(i).label).Number(label_fraction[i] / pixels, f6);
   writer.EndObject().Key("palette_bgr").BeginObject();
   for (int i = 0; i < n; ++i) {
-    const cv::Vec3b& colour = kPalette[i % (sizeof(kPalette) / sizeof(kPalette[0]))];
+    const cv::Vec3b colour = MaterialColour(i);
     writer.Key(registry.material(i).label).BeginArray();
     writer.Integer(colour[0]).Integer(colour[1]).Integer(colour[2]).EndArray();
   }

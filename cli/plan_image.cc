@@ -1,4 +1,5 @@
 #include "plan_image.h"
+#include "report_drawing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,14 +17,6 @@ namespace {
 using planning::FootPose;
 
 constexpr double kMaxPixels = 64e6;
-
-// Friction to colour (BGR): red at 0, yellow at 0.5, green from 1.
-cv::Vec3b FrictionColour(double mu, double shade) {
-  const double t = std::clamp(mu, 0.0, 1.0);
-  const double r = t < 0.5 ? 1.0 : 2.0 * (1.0 - t);
-  const double g = t < 0.5 ? 2.0 * t : 1.0;
-  return cv::Vec3b(0, static_cast<uchar>(std::lround(220 * g * shade)), static_cast<uchar>(std::lround(220 * r * shade)));
-}
 
 }  // namespace
 

@@ -40,6 +40,7 @@
 #include "file_checks.h"
 #include "numeric_option.h"
 #include "oracle_cache.h"
+#include "perception_report.h"
 #include "plan_image.h"
 #include "walk_plots.h"
 
@@ -70,7 +71,8 @@ struct WalkArguments {
 
 bool IsWalkOutput(const std::string& name) {
   return name == "walk.json" || name == "walk_zmp.png" || name == "walk_com.png" || name == "walk_steps.png" ||
-         name == "walk.html" || name == "terrain.png";
+         name == "walk.html" || name == "terrain.png" || name == "run.json" || name == "timing.json" ||
+         name == "perception.png";
 }
 
 // The material of the scenario's ground under (x, y): the last region containing it (later regions lie on earlier
@@ -277,13 +279,14 @@ int Run(const WalkArguments& args) {
   WalkRecord record;
   std::shared_ptr<const TerrainMap> perceived;
   double perception_seconds = 0.0;
+  MainRecord main;  // `cairn run`: what the first frame's perception made (the walk is moved into `record`)
+  std::optional<PerceptionSetup> perception;
   if (args.perceive) {
     const SyntheticCamera camera;
-    const PerceptionSetup perception = PerceptionSetupFromScenario(
-        scenario, camera.Calibration(), perception::MakeMaterialSegmenter(args.segmenter));
-    MainRecord main = RunMainDiagram(BuildMainDiagram(setup, perception, ScenarioCamera(scenario, camera,
-                                                                                        perception.period)),
-                                     run);
+    perception = PerceptionSetupFromScenario(scenario, camera.Calibration(),
+                                             perception::MakeMaterialSegmenter(args.segmenter));
+    main = RunMainDiagram(BuildMainDiagram(setup, *perception, ScenarioCamera(scenario, camera, perception->period)),
+                          run);
     record = std::move(main.walk);
     perceived = main.terrain;
     perception_seconds = main.perception_seconds;
@@ -295,10 +298,20 @@ int Run(const WalkArguments& args) {
       WalkJson(scenario, objective_name, args.stabilizer, setup.feedback, *robot, setup.plant.sole_bodies, record,
                steps, perceived.get());
 
+  // The wall times per stage: printed with --json and written to timing.json, never into walk.json or run.json,
+  // so that runs of the same inputs write the same bytes there.
+  JsonWriter timing;
+  timing.BeginObject().Key("perception_s").Number(perception_seconds, JsonWriter::Fixed(3));
+  timing.Key("footsteps_s").Number(record.start.seconds.footsteps, JsonWriter::Fixed(3));
+  timing.Key("trajectory_s").Number(record.start.seconds.trajectory, JsonWriter::Fixed(3));
+  timing.Key("stabilizer_s").Number(record.start.seconds.stabilizer, JsonWriter::Fixed(3));
+  timing.Key("plant_s").Number(record.plant_seconds, JsonWriter::Fixed(3)).EndObject();
   if (out) {
-    out->WriteFile("walk.json", json + "\n");
+    out->WriteFile(args.perceive ? "run.json" : "walk.json", json + "\n");
+    if (args.perceive) out->WriteFile("timing.json", timing.text() + "\n");
     if (perceived != nullptr) {
       out->WriteFile("terrain.png", PlanImagePng(*perceived, record.plan, scenario.goal(), setup.geometry));
+      out->WriteFile("perception.png", PerceptionReportPng(main, perception->registry, perception->eta));
     }
     if (record.start.ready) {
       out->WriteFile("walk_zmp.png", WalkZmpPng(record, setup.geometry));
@@ -325,15 +338,8 @@ int Run(const WalkArguments& args) {
     out->Commit();
   }
   if (args.json) {
-    // The wall times per stage are for this printout only (the files hold no timing, so runs compare equal).
     std::string line = json;
     line.pop_back();
-    JsonWriter timing;
-    timing.BeginObject().Key("perception_s").Number(perception_seconds, JsonWriter::Fixed(3));
-    timing.Key("footsteps_s").Number(record.start.seconds.footsteps, JsonWriter::Fixed(3));
-    timing.Key("trajectory_s").Number(record.start.seconds.trajectory, JsonWriter::Fixed(3));
-    timing.Key("stabilizer_s").Number(record.start.seconds.stabilizer, JsonWriter::Fixed(3));
-    timing.Key("plant_s").Number(record.plant_seconds, JsonWriter::Fixed(3)).EndObject();
     std::printf("%s, \"seconds\": %s}\n", line.c_str(), timing.text().c_str());
     return 0;
   }
@@ -381,8 +387,12 @@ int Run(const WalkArguments& args) {
                 record.start.seconds.footsteps, record.start.seconds.trajectory, record.start.seconds.stabilizer,
                 record.plant_seconds);
   }
-  if (out) std::printf("wrote      %s/walk.json%s%s\n", args.out.c_str(), perceived ? ", terrain.png" : "",
-                       record.start.ready ? ", walk_zmp.png, walk_com.png, walk_steps.png, walk.html" : "");
+  if (out) {
+    std::printf("wrote      %s/%s%s%s\n", args.out.c_str(),
+                args.perceive ? "run.json, timing.json" : "walk.json",
+                perceived ? ", perception.png, terrain.png" : "",
+                record.start.ready ? ", walk_zmp.png, walk_com.png, walk_steps.png, walk.html" : "");
+  }
   return 0;
 }
 
@@ -434,8 +444,8 @@ void RegisterWalkCommand(CommandRegistry* registry) {
         app.add_option("--segmenter", args->segmenter,
                        "Material segmenter: builtin:PATH or onnx:PATH (default: the built-in one in data/models)");
         app.add_option("--out", args->out,
-                       "Folder for walk.json, terrain.png, walk_zmp.png, walk_com.png, walk_steps.png, walk.html "
-                       "(replaced as a whole)");
+                       "Folder for run.json, timing.json, perception.png, terrain.png and, when walked, "
+                       "walk_zmp.png, walk_com.png, walk_steps.png, walk.html (replaced as a whole)");
         app.add_option("--oracle-cache", args->oracle_cache,
                        "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
         app.add_flag("--json", args->json, "Print walk.json and the stages' wall times as one JSON object");

@@ -78,8 +78,19 @@ MainRecord RunMainDiagram(const MainDiagram& main, WalkRunOptions options) {
     const MainStart start = InitializeMainDiagram(main, simulator);
     record.perception_seconds = start.perception_seconds;
     root = &simulator->get_context();
-    record.terrain = std::make_shared<const TerrainMap>(main.terrain->get_terrain_output_port().Eval<TerrainMap>(
-        main.walk.diagram->GetSubsystemContext(*main.terrain, *root)));
+    const systems::Diagram& diagram = *main.walk.diagram;
+    record.terrain = std::make_shared<const TerrainMap>(
+        main.terrain->get_terrain_output_port().Eval<TerrainMap>(diagram.GetSubsystemContext(*main.terrain, *root)));
+    record.grid = std::make_shared<const perception::OccupancyGrid>(
+        main.occupancy->get_grid_output_port().Eval<perception::OccupancyGrid>(
+            diagram.GetSubsystemContext(*main.occupancy, *root)));
+    const systems::Context& friction = diagram.GetSubsystemContext(*main.friction, *root);
+    record.image = main.camera->GetOutputPort("left_colour")
+                       .Eval<cv::Mat>(diagram.GetSubsystemContext(*main.camera, *root))
+                       .clone();
+    record.material_probabilities =
+        main.friction->GetOutputPort("material_probabilities").Eval<cv::Mat>(friction).clone();
+    record.friction_quantile = main.friction->GetOutputPort("friction_quantile").Eval<cv::Mat>(friction).clone();
     return start.walk;
   };
   record.walk = RunWalk(main.walk, options);

@@ -50,10 +50,16 @@ struct MainStart {
 /// TrajectoryOptimizer and the Stabilizer follow, and the plant is put on the reference's first sample.
 MainStart InitializeMainDiagram(const MainDiagram& main, systems::Simulator* simulator);
 
-/// Everything a main-diagram run produced: the walk's record, the terrain the planner read and the perception's time.
+/// Everything a main-diagram run produced: the walk's record, what the first frame's perception made (the
+/// products the plan was made on) and the perception's time. The images are empty and the pointers null if the
+/// run stopped before perceiving.
 struct MainRecord {
   WalkRecord walk;
-  std::shared_ptr<const TerrainMap> terrain;  ///< the assembled terrain the plan was made on (null if none)
+  std::shared_ptr<const TerrainMap> terrain;  ///< the assembled terrain the plan was made on
+  std::shared_ptr<const perception::OccupancyGrid> grid;  ///< the occupancy grid it was assembled from
+  cv::Mat image;                   ///< the camera's left colour image (BGR)
+  cv::Mat material_probabilities;  ///< CV_32FC(registry labels), P(x_k = l_i) in registry order
+  cv::Mat friction_quantile;       ///< CV_32F, Q_{1-eta} per pixel
   double perception_seconds{0.0};  ///< wall time of the first frame's perception (not part of any result)
 };
 

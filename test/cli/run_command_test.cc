@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -40,8 +41,18 @@ fs::path Folder(const std::string& name) {
   return dir;
 }
 
-// The mock-up with the box: walk.json says what the camera reconstructed, and the perceived terrain is drawn.
-TEST(RunCommandTest, WritesTheWalkAndThePerceivedTerrain) {
+// Width and height of a PNG, from its IHDR chunk.
+std::pair<int, int> PngSize(const std::string& png) {
+  auto be32 = [&](std::size_t at) {
+    return (static_cast<unsigned char>(png[at]) << 24) | (static_cast<unsigned char>(png[at + 1]) << 16) |
+           (static_cast<unsigned char>(png[at + 2]) << 8) | static_cast<unsigned char>(png[at + 3]);
+  };
+  return png.size() > 24 ? std::pair<int, int>(be32(16), be32(20)) : std::pair<int, int>(0, 0);
+}
+
+// The mock-up with the box: run.json says what the camera reconstructed, timing.json how long each stage took,
+// and the perception and the perceived terrain are drawn.
+TEST(RunCommandTest, WritesTheRunThePerceptionAndThePerceivedTerrain) {
   cairn::planning::test::SharedOracle(cairn::planning::WalkingObjective::kComWorkPlusHeat);
   const fs::path out = Folder("obstacle");
   const CairnStreams run = RunCairnStreams("run --scenario " + kMockup + "mockup_obstacle.yaml --oracle-cache " +
@@ -49,9 +60,25 @@ TEST(RunCommandTest, WritesTheWalkAndThePerceivedTerrain) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("run        mock-up with an obstacle (objective ecom_heat, stabiliser fft)"));
   EXPECT_THAT(run.out, HasSubstr("perceived  terrain of 96 x 72 cells"));
-  for (const char* name : {"walk.json", "terrain.png"}) ASSERT_TRUE(fs::exists(out / name)) << name;
+  EXPECT_THAT(run.out, HasSubstr("/run.json, timing.json, perception.png, terrain.png"));
+  for (const char* name : {"run.json", "timing.json", "perception.png", "terrain.png"}) {
+    ASSERT_TRUE(fs::exists(out / name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(out / "walk.json"));
   EXPECT_THAT(Slurp(out / "terrain.png"), StartsWith("\x89PNG"));
-  const nlohmann::json walk = nlohmann::json::parse(Slurp(out / "walk.json"));
+  const std::string report = Slurp(out / "perception.png");
+  ASSERT_THAT(report, StartsWith("\x89PNG"));
+  // Three 320-pixel camera panels side by side, the grid's panels under them.
+  const auto [width, height] = PngSize(report);
+  EXPECT_GE(width, 3 * 320);
+  EXPECT_GE(height, 240 + 72 * 4);
+  const nlohmann::json timing = nlohmann::json::parse(Slurp(out / "timing.json"));
+  for (const char* stage : {"perception_s", "footsteps_s", "trajectory_s", "stabilizer_s", "plant_s"}) {
+    EXPECT_GE(timing.at(stage).get<double>(), 0.0) << stage;
+  }
+  EXPECT_GT(timing.at("perception_s").get<double>(), 0.0);
+  const nlohmann::json walk = nlohmann::json::parse(Slurp(out / "run.json"));
+  EXPECT_FALSE(walk.contains("seconds"));  // wall times stay out of run.json, so equal runs write equal bytes
   // Walked or not is the planner's and the plant's verdict (docs/main_diagram.md); not walked names the stage.
   if (!walk.at("walked").get<bool>()) {
     EXPECT_FALSE(walk.at("reason").get<std::string>().empty());

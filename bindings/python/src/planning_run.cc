@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "cv_mat_caster.h"
 #include "numpy_support.h"
 #include "ownership.h"
 #include "cairn/planning/run/main_diagram.h"
@@ -124,6 +125,16 @@ void DefinePlanningRun(py::module_ m) {
           "terrain",
           [](const MainRecord& r) -> py::object { return r.terrain ? py::cast(TerrainMap(*r.terrain)) : py::none(); },
           "The assembled TerrainMap the plan was made on (a copy), or None.")
+      .def_property_readonly(
+          "grid",
+          [](const MainRecord& r) -> py::object {
+            return r.grid ? py::cast(perception::OccupancyGrid(*r.grid)) : py::none();
+          },
+          "The OccupancyGrid the terrain was assembled from (a copy), or None.")
+      .def_readonly("image", &MainRecord::image, "The camera's left colour image (BGR, H x W x 3).")
+      .def_readonly("material_probabilities", &MainRecord::material_probabilities,
+                    "P(x_k = l_i) per pixel, registry order (H x W x labels).")
+      .def_readonly("friction_quantile", &MainRecord::friction_quantile, "Q_{1-eta} per pixel (H x W).")
       .def_readonly("perception_seconds", &MainRecord::perception_seconds, "Wall time of the first frame.");
   m.def("RunMainDiagram", &RunMainDiagram, py::arg("main"), py::arg("options") = WalkRunOptions(),
         py::call_guard<py::gil_scoped_release>(),

@@ -66,6 +66,12 @@ def test_the_main_diagram_perceives_then_plans_on_what_it_saw(oracle, walking_mo
     record = planning.RunMainDiagram(main, run)
     terrain = record.terrain
     assert terrain is not None and (terrain.cols(), terrain.rows()) == (96, 72)
+    # What the first frame's perception made, as the plan was made on it.
+    assert record.image.shape == (240, 320, 3) and record.image.dtype == np.uint8
+    assert record.material_probabilities.shape == (240, 320, setup.registry.size())
+    np.testing.assert_allclose(record.material_probabilities.sum(axis=2), 1.0, atol=1e-3)
+    assert record.friction_quantile.shape == (240, 320)
+    assert record.grid is not None and tuple(record.grid.dims()) == (96, 72, 44)
     # The planner read the perceived terrain: the wood ahead at its friction quantile (materials.yaml: N(0.3, 0.12),
     # Q_0.05 = 0.103), the points of a cell fused as independent looks at its material.
     frictions = [terrain.friction(*terrain.CellAt(x, 0.3)) for x in np.arange(0.3, 1.1, 0.05)]
