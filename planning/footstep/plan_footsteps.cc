@@ -44,6 +44,34 @@ std::string CheckFoothold(StanceGraph& graph, const TerrainMap& terrain, const c
   return "";
 }
 
+// Why no foothold within `goal`'s tolerances of its `side` foot can carry a foot, or "" when one can: the search
+// ends at any stance within the tolerances (StanceGraph::IsGoal), so an unsupported goal foothold only matters when
+// every lattice foothold around it is unsupported too (perceived terrain rarely supports the exact goal pose).
+std::string CheckGoalFoothold(StanceGraph& graph, const TerrainMap& terrain, FootSide side, const StanceGoal& goal,
+                              const FootstepPlannerOptions& options) {
+  const FootPose& pose = side == FootSide::kLeft ? goal.stance.left : goal.stance.right;
+  StanceGraph::LatticeFoot foot;
+  const std::string exact = CheckFoothold(graph, terrain, "goal", side, pose, &foot);
+  if (exact.empty() || !graph.Snap(pose, &foot)) return exact;
+  const int reach = static_cast<int>(std::floor(goal.position_tolerance / options.lattice_resolution + 1e-9));
+  const int turns = static_cast<int>(std::floor(goal.yaw_tolerance / (2.0 * M_PI / options.orientations) + 1e-9));
+  for (int dy = -reach; dy <= reach; ++dy) {
+    for (int dx = -reach; dx <= reach; ++dx) {
+      for (int dt = -std::min(turns, options.orientations / 2); dt <= std::min(turns, options.orientations / 2); ++dt) {
+        StanceGraph::LatticeFoot near{foot.ix + dx, foot.iy + dy,
+                                      ((foot.itheta + dt) % options.orientations + options.orientations) %
+                                          options.orientations};
+        StanceGraph::LatticeFoot snapped;
+        const FootPose candidate = graph.PoseOf(near);
+        if (std::hypot(candidate.x - pose.x, candidate.y - pose.y) > goal.position_tolerance) continue;
+        if (!graph.Snap(candidate, &snapped)) continue;
+        if (graph.EvaluateFoothold(snapped).supported) return "";
+      }
+    }
+  }
+  return exact + ", nor is any foothold within the goal's tolerance";
+}
+
 using Clock = std::chrono::steady_clock;
 
 // Seconds left before `deadline` (infinity without one), at least a nanosecond so that AraStar accepts it and
@@ -130,12 +158,12 @@ FootstepPlan PlanOnStanceGraph(StanceGraph& graph, const TerrainMap& terrain, co
   FootstepPlan plan;
   plan.cost_model = cost_model.description();
   plan.start = start;
-  StanceGraph::LatticeFoot left, right, goal_left, goal_right;
+  StanceGraph::LatticeFoot left, right;
   for (const std::string& reason :
        {CheckFoothold(graph, terrain, "start", FootSide::kLeft, start.left, &left),
         CheckFoothold(graph, terrain, "start", FootSide::kRight, start.right, &right),
-        CheckFoothold(graph, terrain, "goal", FootSide::kLeft, goal.stance.left, &goal_left),
-        CheckFoothold(graph, terrain, "goal", FootSide::kRight, goal.stance.right, &goal_right)}) {
+        CheckGoalFoothold(graph, terrain, FootSide::kLeft, goal, options),
+        CheckGoalFoothold(graph, terrain, FootSide::kRight, goal, options)}) {
     if (!reason.empty()) {
       plan.reason = reason;
       plan.statistics.plan_seconds = seconds();

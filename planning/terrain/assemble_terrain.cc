@@ -41,7 +41,11 @@ void RemoveHeightOutliers(int cols, int rows, double res, const TerrainAssemblyO
       }
       const auto middle = window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2);
       std::nth_element(window.begin(), middle, window.end());
-      if (std::abs(seen[column] - *middle) > options.outlier_height) (*height)[column] = std::nan("");
+      if (options.outlier_height > 0.0 && std::abs(seen[column] - *middle) > options.outlier_height) {
+        (*height)[column] = std::nan("");
+      } else if (options.median_heights) {
+        (*height)[column] = *middle;
+      }
     }
   }
 }
@@ -226,7 +230,7 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
       friction[column] = perception::FrictionQuantile(registry, weights, options.eta, options.quantile_method);
     }
   }
-  if (options.outlier_height > 0.0) RemoveHeightOutliers(cols, rows, res, options, &height);
+  if (options.outlier_height > 0.0 || options.median_heights) RemoveHeightOutliers(cols, rows, res, options, &height);
   if (options.max_gap > 0.0) BridgeGaps(cols, rows, res, options, &height, &friction);
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {

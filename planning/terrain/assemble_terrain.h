@@ -42,6 +42,10 @@ struct TerrainAssemblyOptions {
   /// window (a kerb seen by only a few cells) is lost with it, so keep the window small.
   double outlier_height{0.0};
   double outlier_radius{0.05};
+  /// Every ground cell (that outlier_height keeps) takes the median height of the ground within outlier_radius: a
+  /// median filter, which flattens a single frame's centimetre noise on a level floor and keeps a step's edge
+  /// where the window holds more of one side than of the other.
+  bool median_heights{false};
   /// Widest gap in the ground (m) to bridge, as a surface mesh over the points would (thesis 5.2.3 meshes its
   /// point cloud): a column without ground whose nearest ground cells on two opposite sides (along x or along y),
   /// at most this far apart, stand within `max_gap_step` of each other gets ground interpolated between them, with

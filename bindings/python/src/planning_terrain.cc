@@ -30,6 +30,8 @@ void DefinePlanningTerrain(py::module_ m) {
       .def_readwrite("outlier_height", &TerrainAssemblyOptions::outlier_height,
                      "A cell this far (m) from its window's median height loses its ground (0: keep all).")
       .def_readwrite("outlier_radius", &TerrainAssemblyOptions::outlier_radius, "Half-side of that window, m.")
+      .def_readwrite("median_heights", &TerrainAssemblyOptions::median_heights,
+                     "Each kept cell takes the median height within outlier_radius.")
       .def_readwrite("max_gap", &TerrainAssemblyOptions::max_gap,
                      "Widest gap (m) between level ground to bridge (0: none).")
       .def_readwrite("max_gap_step", &TerrainAssemblyOptions::max_gap_step,

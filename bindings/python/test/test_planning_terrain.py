@@ -85,6 +85,8 @@ def test_independent_fusion_outliers_and_gaps():
     assert terrain.height(12, 3) == pytest.approx(0.05, abs=1e-6)
     options.outlier_height, options.outlier_radius = 0.02, 0.1
     assert math.isnan(planning.AssembleTerrain(grid, points, registry, options).height(12, 3))
+    options.median_heights = True
+    assert planning.AssembleTerrain(grid, points, registry, options).height(11, 3) == pytest.approx(0.0, abs=1e-6)
     options.max_gap = 0.05
     bridged = planning.AssembleTerrain(grid, points, registry, options)
     assert bridged.height(12, 3) == pytest.approx(0.0, abs=1e-6)

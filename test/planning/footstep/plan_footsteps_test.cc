@@ -242,6 +242,28 @@ TEST(PlanFootstepsTest, ExplainsWhyThereIsNoPlan) {
   }
 }
 
+// The search ends at any stance within the goal's tolerances, so a goal foothold that cannot carry a foot (a
+// perceived terrain rarely supports the exact goal pose) only stops the plan when nothing within the tolerance can.
+TEST(PlanFootstepsTest, AGoalFootholdWithoutSupportIsReplacedByOneWithinTheTolerance) {
+  const TestStepCostModel model;
+  TerrainMap ground = FlatGround(-0.5, -1.0, 2.5, 1.0, 1.0);
+  Paint(&ground, 1.7875, -0.1125, 1.8125, -0.0875, 0.0, 0.0);  // one cell of water under the right goal foot
+  const StanceGoal goal = GoalAt(1.8);
+  const FootstepPlan plan = PlanFootsteps(ground, StanceAt(0.0), goal, model, BipedGeometry{}, Options());
+  ASSERT_TRUE(plan.found) << plan.reason;
+  const Stance end = plan.StanceAfter(static_cast<int>(plan.steps.size()) - 1);
+  EXPECT_LE(std::hypot(end.right.x - 1.8, end.right.y + 0.1), goal.position_tolerance + 1e-9);
+  EXPECT_GT(std::hypot(end.right.x - 1.8, end.right.y + 0.1), 1e-9);  // not the exact goal foothold
+  // Water over the whole tolerance disk of the right foot.
+  Paint(&ground, 1.6, -0.4, 2.0, 0.0, 0.0, 0.0);
+  const FootstepPlan none = PlanFootsteps(ground, StanceAt(0.0), goal, model, BipedGeometry{}, Options());
+  EXPECT_FALSE(none.found);
+  EXPECT_NE(none.reason.find("goal right foot at (1.80, -0.10) is not supported: the ground there is not walkable "
+                             "(friction 0), nor is any foothold within the goal's tolerance"),
+            std::string::npos)
+      << none.reason;
+}
+
 TEST(PlanFootstepsTest, ReturnsTheBestPlanSoFarWhenStoppedEarly) {
   const TerrainMap ground = FlatGround(-0.5, -1.5, 3.5, 1.5, 1.0);
   const TestStepCostModel model;

@@ -150,8 +150,8 @@ TEST(MainDiagramTest, IsOneDiagramFromTheCameraToThePlant) {
 
 // What the head camera's first frame makes of the mock-up (measured 2026-12-05, docs/main_diagram.md): the wood is
 // reconstructed everywhere the camera looks, at its height, and all of it is walkable at its friction quantile; the
-// ceramic tiles, nearly textureless between their joints, are reconstructed in part (about 75 % once the cells a
-// mismatch put centimetres off the floor are dropped), and nearly all of that is walkable at the ceramic's quantile
+// ceramic tiles, nearly textureless between their joints, are reconstructed in part (about 77 % once the cells a
+// mismatch put centimetres off the floor are dropped), and about 90 % of that is walkable at the ceramic's quantile
 // (the points of a cell fused as independent looks at its material). Behind the camera's view nothing is known.
 TEST(MainDiagramTest, PerceivesTheMockupsGroundAndFriction) {
   const FootstepScenario scenario = Mockup("mockup.yaml");
@@ -190,9 +190,10 @@ TEST(MainDiagramTest, PerceivesTheClothAsNotWalkableAndTheObstacleAsRaisedGround
 
 // Thesis 5.2.3 through the whole diagram, perception included: RunMainDiagram perceives the first frame, hands the
 // assembled terrain to the planner and walks whatever the chain settles on. Measured 2026-12-05 (docs/main_diagram.md):
-// the planner refuses the start, because the right sole's front edge lies over tiles the single frame did not
-// reconstruct, so nothing is walked; that is printed, not asserted (and with the start granted, every plan would
-// need more friction than the wood's perceived cells give: the ground-truth plan uses all of the wood's 0.103). Asserted: the record holds the terrain the planner read, and a chain that settles on no
+// the planner refuses the goal: no right foothold within its tolerance has 15 walkable, level sole samples on the
+// perceived tiles (a quarter of them unreconstructed, a tenth labelled snow or paper), so nothing is walked; that
+// is printed, not asserted. With the tiles' holes filled and their heights levelled by hand, the same perceived
+// terrain gives the ground truth's six steps (docs/main_diagram.md). Asserted: the record holds the terrain the planner read, and a chain that settles on no
 // reference says which stage stopped and simulates nothing; one that does walks without a fall.
 TEST(MainDiagramTest, RunsThePerceptionThePlannerAndThePlantAsOneDiagram) {
   const FootstepScenario scenario = Mockup("mockup.yaml");

@@ -280,6 +280,33 @@ TEST(AssembleTerrainTest, HeightOutliersLoseTheirGround) {
   EXPECT_NEAR(terrain.height(14, 5), 0.0, 1e-6);
 }
 
+// A single frame's centimetre noise on a level floor: median_heights gives each cell its neighbourhood's median,
+// which is level again, while the 10 cm step keeps its edge.
+TEST(AssembleTerrainTest, MedianHeightsFlattenNoiseAndKeepAStep) {
+  const MaterialRegistry registry = MaterialRegistry::ThesisTable33();
+  OccupancyGrid grid = FlatGrid();
+  FrictionPointCloud cloud = Floor(registry, 2.0, "wood", "wood");
+  for (std::size_t i = 0; i < cloud.points_W.size(); ++i) {
+    Eigen::Vector3d& p = cloud.points_W[i];
+    const int c = static_cast<int>(p.x() / 0.05), r = static_cast<int>(p.y() / 0.05);
+    // Columns 15..19: a step 10 cm up; every column off by up to 8 mm in a checkerboard-like pattern.
+    p.z() = (c >= 15 ? 0.1 : 0.0) + 0.008 * (((c * 7 + r * 3) % 5) - 2) / 2.0;
+  }
+  for (int c = 15; c < 20; ++c) {
+    for (int r = 0; r < 10; ++r) Occupy(&grid, Eigen::Vector3d(0.025 + 0.05 * c, 0.025 + 0.05 * r, 0.11), 0.8);
+  }
+  TerrainAssemblyOptions options;
+  options.outlier_radius = 0.1;
+  EXPECT_GT(std::abs(AssembleTerrain(grid, cloud, registry, options).height(3, 3)), 0.003);
+  options.median_heights = true;
+  const TerrainMap terrain = AssembleTerrain(grid, cloud, registry, options);
+  for (int c = 2; c < 13; ++c) {
+    for (int r = 2; r < 8; ++r) EXPECT_NEAR(terrain.height(c, r), 0.0, 0.0041) << c << ", " << r;
+  }
+  EXPECT_NEAR(terrain.height(14, 5), 0.0, 0.0081);
+  EXPECT_NEAR(terrain.height(15, 5), 0.1, 0.0081);
+}
+
 // Stereo leaves gaps where a surface has no texture: max_gap bridges those between level ground, with the lower
 // friction of the two sides, and leaves wider gaps and gaps across a step as they are.
 TEST(AssembleTerrainTest, BridgesNarrowGapsBetweenLevelGround) {
