@@ -436,7 +436,7 @@ cv::Mat BuiltinMaterialSegmenter::DoSegment(const cv::Mat& image) const {
   const cv::Mat grid = SegmentGrid(image);
   const int stride = features_.stride();
   // Resizing the grid to stride x its size puts cell centres on their pixels; then crop to the image.
-  cv::Mat up;
+  thread_local cv::Mat up;  // reused from frame to frame (MaterialFeatures keeps its maps likewise)
   cv::resize(grid, up, cv::Size(grid.cols * stride, grid.rows * stride), 0.0, 0.0, cv::INTER_LINEAR);
   return up(cv::Rect(0, 0, image.cols, image.rows)).clone();
 }

@@ -12,12 +12,15 @@
 namespace cairn::perception {
 namespace {
 
-// Window mean of a CV_32F map.
-cv::Mat BoxMean(const cv::Mat& map, int window) {
-  cv::Mat mean;
-  cv::boxFilter(map, mean, CV_32F, cv::Size(window, window), cv::Point(-1, -1), true, cv::BORDER_REFLECT);
-  return mean;
-}
+// The per-pixel maps of Compute() and their window means, kept per thread from one call to the next: an image
+// stream's frames have one size, so every buffer is allocated once (about 60 MB at 640x480; allocated anew each
+// frame, the page faults of memory returned to the system and taken back cost more than the features).
+struct FeatureScratch {
+  cv::Mat bgr, gx, gy, l1, l2, l3, cx, cy, lbp, indicator, product;
+  std::vector<cv::Mat> lab;
+  std::vector<cv::Mat> maps{21};
+  std::vector<cv::Mat> means{21};
+};
 
 // Tables of BgrToLab.
 struct LabTables {
@@ -47,7 +50,7 @@ struct LabTables {
 // (linearly interpolated, error < 1e-4 of the L* range) make it ~10x cheaper.
 void BgrToLab(const cv::Mat& bgr, std::vector<cv::Mat>* lab) {
   static const LabTables tables;
-  lab->assign(3, cv::Mat());
+  lab->resize(3);
   for (cv::Mat& plane : *lab) plane.create(bgr.size(), CV_32F);
   for (int r = 0; r < bgr.rows; ++r) {
     const auto* in = bgr.ptr<cv::Vec3b>(r);
@@ -103,41 +106,45 @@ cv::Mat MaterialFeatures::Compute(const cv::Mat& image) const {
                                 cairn::FormatShort(window_) + "x" + cairn::FormatShort(window_) +
                                 " patch window; give an image at least that large or a model with a smaller window.");
   }
-  cv::Mat bgr;
+  thread_local FeatureScratch scratch;
+  FeatureScratch& w = scratch;
+  const cv::Mat* bgr = &image;
   if (image.channels() == 1) {
-    cv::cvtColor(image, bgr, cv::COLOR_GRAY2BGR);
-  } else {
-    bgr = image;
+    cv::cvtColor(image, w.bgr, cv::COLOR_GRAY2BGR);
+    bgr = &w.bgr;
   }
-  std::vector<cv::Mat> channels;
-  BgrToLab(bgr, &channels);
+  BgrToLab(*bgr, &w.lab);
 
   // Per-pixel maps whose window means are the features (second moments give the standard deviations).
-  std::vector<cv::Mat> maps;
-  maps.reserve(32);
-  for (const cv::Mat& c : channels) maps.push_back(c);
-  for (const cv::Mat& c : channels) maps.push_back(c.mul(c));
-  const cv::Mat& l = channels[0];
-  cv::Mat gx, gy;
-  cv::Sobel(l, gx, CV_32F, 1, 0, 3, 0.125, 0.0, cv::BORDER_REFLECT);
-  cv::Sobel(l, gy, CV_32F, 0, 1, 3, 0.125, 0.0, cv::BORDER_REFLECT);
-  maps.push_back(gx.mul(gx) + gy.mul(gy));  // 6: fine gradient energy
-  cv::Mat l1, l3;
-  cv::GaussianBlur(l, l1, cv::Size(0, 0), 1.0, 1.0, cv::BORDER_REFLECT);
-  cv::GaussianBlur(l, l3, cv::Size(0, 0), 3.0, 3.0, cv::BORDER_REFLECT);
-  cv::Mat l2;
-  cv::GaussianBlur(l, l2, cv::Size(0, 0), 2.0, 2.0, cv::BORDER_REFLECT);
-  cv::Mat cx, cy;
-  cv::Sobel(l2, cx, CV_32F, 1, 0, 3, 0.125, 0.0, cv::BORDER_REFLECT);
-  cv::Sobel(l2, cy, CV_32F, 0, 1, 3, 0.125, 0.0, cv::BORDER_REFLECT);
-  maps.push_back(cx.mul(cx) + cy.mul(cy));  // 7: coarse gradient energy
-  maps.push_back(gx.mul(gx) - gy.mul(gy));  // 8: structure tensor Jxx - Jyy
-  maps.push_back(2.0f * gx.mul(gy));        // 9: 2 Jxy
-  maps.push_back(cv::abs(l - l1));          // 10: fine band
-  maps.push_back(cv::abs(l1 - l3));         // 11: coarse band
+  std::vector<cv::Mat>& maps = w.maps;
+  for (int k = 0; k < 3; ++k) {
+    w.lab[static_cast<std::size_t>(k)].copyTo(maps[static_cast<std::size_t>(k)]);
+    cv::multiply(w.lab[static_cast<std::size_t>(k)], w.lab[static_cast<std::size_t>(k)], maps[static_cast<std::size_t>(3 + k)]);
+  }
+  const cv::Mat& l = w.lab[0];
+  cv::Sobel(l, w.gx, CV_32F, 1, 0, 3, 0.125, 0.0, cv::BORDER_REFLECT);
+  cv::Sobel(l, w.gy, CV_32F, 0, 1, 3, 0.125, 0.0, cv::BORDER_REFLECT);
+  cv::multiply(w.gx, w.gx, maps[6]);
+  cv::multiply(w.gy, w.gy, w.product);
+  cv::add(maps[6], w.product, maps[6]);  // 6: fine gradient energy
+  cv::GaussianBlur(l, w.l1, cv::Size(0, 0), 1.0, 1.0, cv::BORDER_REFLECT);
+  cv::GaussianBlur(l, w.l3, cv::Size(0, 0), 3.0, 3.0, cv::BORDER_REFLECT);
+  cv::GaussianBlur(l, w.l2, cv::Size(0, 0), 2.0, 2.0, cv::BORDER_REFLECT);
+  cv::Sobel(w.l2, w.cx, CV_32F, 1, 0, 3, 0.125, 0.0, cv::BORDER_REFLECT);
+  cv::Sobel(w.l2, w.cy, CV_32F, 0, 1, 3, 0.125, 0.0, cv::BORDER_REFLECT);
+  cv::multiply(w.cx, w.cx, maps[7]);
+  cv::multiply(w.cy, w.cy, w.product);
+  cv::add(maps[7], w.product, maps[7]);  // 7: coarse gradient energy
+  cv::multiply(w.gx, w.gx, maps[8]);
+  cv::multiply(w.gy, w.gy, w.product);
+  cv::subtract(maps[8], w.product, maps[8]);  // 8: structure tensor Jxx - Jyy
+  cv::multiply(w.gx, w.gy, maps[9], 2.0);      // 9: 2 Jxy
+  cv::absdiff(l, w.l1, maps[10]);              // 10: fine band
+  cv::absdiff(w.l1, w.l3, maps[11]);           // 11: coarse band
   // Rotation-invariant LBP: number of 8-neighbours brighter than the centre (by more than a small margin, so
   // flat regions and sensor noise fall in well-defined bins).
-  cv::Mat lbp(l.size(), CV_8U);
+  w.lbp.create(l.size(), CV_8U);
+  cv::Mat& lbp = w.lbp;
   const int rows = l.rows;
   const int cols = l.cols;
   for (int r = 0; r < rows; ++r) {
@@ -155,18 +162,17 @@ cv::Mat MaterialFeatures::Compute(const cv::Mat& image) const {
     }
   }
   for (int bin = 0; bin <= 8; ++bin) {
-    cv::Mat indicator;
-    cv::compare(lbp, bin, indicator, cv::CMP_EQ);  // 0 or 255
-    indicator.convertTo(indicator, CV_32F, 1.0 / 255.0);
-    maps.push_back(indicator);  // 12..20
+    cv::compare(lbp, bin, w.indicator, cv::CMP_EQ);  // 0 or 255
+    w.indicator.convertTo(maps[static_cast<std::size_t>(12 + bin)], CV_32F, 1.0 / 255.0);  // 12..20
   }
 
   // Window means, sampled at the grid centres.
   const cv::Size grid = GridSize(image.size());
   cv::Mat features(grid.area(), kDimension, CV_32F);
-  std::vector<cv::Mat> means;
-  means.reserve(maps.size());
-  for (const cv::Mat& map : maps) means.push_back(BoxMean(map, window_));
+  std::vector<cv::Mat>& means = w.means;
+  for (std::size_t k = 0; k < maps.size(); ++k) {
+    cv::boxFilter(maps[k], means[k], CV_32F, cv::Size(window_, window_), cv::Point(-1, -1), true, cv::BORDER_REFLECT);
+  }
   for (int gr = 0; gr < grid.height; ++gr) {
     const int r = CentreOf(gr, rows);
     for (int gc = 0; gc < grid.width; ++gc) {
