@@ -16,6 +16,7 @@
 #include "bindings.h"
 #include "cairn/common/number_text.h"
 #include "cairn/perception/friction/builtin_material_segmenter.h"
+#include "cairn/perception/friction/contact_friction_learner.h"
 #include "cairn/perception/friction/contact_observation.h"
 #include "cairn/perception/friction/friction_distribution.h"
 #include "cairn/perception/friction/friction_estimator.h"
@@ -358,6 +359,42 @@ void DefinePerceptionFriction(py::module_ m) {
       .def("registry_parameter", &FrictionEstimator::registry_parameter, "Index of the registry parameter.");
 
   RegisterBoundAbstractValueType<MaterialRegistry>("MaterialRegistry");
+
+  py::class_<FootContact>(m, "FootContact", "A foot's contact: where, and what it taught about friction there.")
+      .def(py::init([](const Eigen::Vector3d& position_W, const ContactObservation& observation) {
+             return FootContact{position_W, observation};
+           }),
+           py::arg("position_W"), py::arg("observation"), "A contact at `position_W` (m) and what it taught.")
+      .def_readwrite("position_W", &FootContact::position_W, "Contact point in the world, m.")
+      .def_readwrite("observation", &FootContact::observation, "ContactObservation.");
+  RegisterConvertedAbstractValueType<std::vector<FootContact>>("FootContacts");
+  py::class_<ContactLearning>(m, "ContactLearning", "ContactFrictionLearner's state.")
+      .def_readonly("registry", &ContactLearning::registry, "The learned MaterialRegistry.")
+      .def_readonly("seen", &ContactLearning::seen, "Contacts of the log read.")
+      .def_readonly("learned", &ContactLearning::learned, "Contacts that updated the registry.")
+      .def_readonly("skipped", &ContactLearning::skipped, "Contacts with no perceived point under the foot.");
+  py::class_<ContactFrictionLearner, systems::LeafSystem>(
+      m, "ContactFrictionLearner",
+      "System: inputs `contacts` (list of FootContact, append-only) and `friction_points` (FrictionPointCloud); "
+      "output `registry` (MaterialRegistry learned from touch).")
+      .def(py::init([](MaterialRegistry registry, double period, double radius, double height_window) {
+             return std::make_unique<ContactFrictionLearner>(std::move(registry), period, radius, height_window);
+           }),
+           py::arg("registry"), py::arg("period"), py::arg("radius") = 0.05, py::arg("height_window") = 0.05,
+           "ValueError for an empty registry, a bad period, radius or height window.")
+      .def(
+          "learning",
+          [](const ContactFrictionLearner& self, const systems::Context& context) { return self.learning(context); },
+          py::arg("context"), "The state in `context` (a copy).")
+      .def(
+          "MixtureUnder",
+          [](const ContactFrictionLearner& self, const FrictionPointCloud& points,
+             const Eigen::Vector3d& position_W) -> py::object {
+            Eigen::VectorXd mixture;
+            if (!self.MixtureUnder(points, position_W, &mixture)) return py::none();
+            return py::cast(mixture);
+          },
+          py::arg("points"), py::arg("position_W"), "Mean material mixture under a contact point, or None.");
   RegisterBoundAbstractValueType<FrictionPointCloud>("FrictionPointCloud");
 }
 

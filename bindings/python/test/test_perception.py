@@ -303,3 +303,33 @@ def test_disparity_to_depth_between_the_matcher_and_a_consumer():
     with pytest.raises(ValueError, match="offset -1 s"):
         perception.ConfidenceToOccupancy(
             perception.OccupancyGrid(np.zeros(3), 0.1, np.array([2, 2, 2])), calibration, 0.1, offset=-1.0)
+
+
+def test_contact_friction_learner_credits_slips_to_the_material_under_the_foot():
+    """Wet tiles: the segmenter says ceramic, the feet slip at 0.3; ceramic's belief drops, wood's does not move."""
+    registry = perception.MaterialRegistry.ThesisTable33()
+    xs, ys = np.meshgrid(np.arange(0.01, 2.0, 0.02), np.arange(-0.49, 0.5, 0.02))
+    points = np.stack([xs.ravel(), ys.ravel(), np.zeros(xs.size)], axis=1)
+    weights = np.zeros((len(points), registry.size()), dtype=np.float32)
+    weights[points[:, 0] < 1.0, registry.IndexOf("ceramic")] = 1.0
+    weights[points[:, 0] >= 1.0, registry.IndexOf("wood")] = 1.0
+    cloud = perception.FrictionPointCloud(points, np.zeros(len(points), dtype=np.float32), weights)
+    learner = perception.ContactFrictionLearner(registry, 0.1)
+    context = learner.CreateDefaultContext()
+    learner.GetInputPort("friction_points").FixValue(context, cloud)
+    slips = [perception.FootContact(np.array([x, 0.0, 0.0]), perception.ContactObservation.Slipped(0.3))
+             for x in (0.3, 0.5, 0.7)]
+    learner.GetInputPort("contacts").FixValue(context, slips + [
+        perception.FootContact(np.array([5.0, 0.0, 0.0]), perception.ContactObservation.Slipped(0.3))])
+    learner.ExecuteForcedEvents(context)
+    state = learner.learning(context)
+    assert (state.seen, state.learned, state.skipped) == (4, 3, 1)
+    learned = learner.GetOutputPort("registry").Eval(context)
+    ceramic, wood = registry.IndexOf("ceramic"), registry.IndexOf("wood")
+    assert learned.material(ceramic).friction.Mean() < 0.3 < registry.material(ceramic).friction.Mean()
+    assert learned.material(wood).friction.Mean() == registry.material(wood).friction.Mean()
+    mixture = learner.MixtureUnder(cloud, np.array([1.5, 0.0, 0.0]))
+    assert mixture[wood] == pytest.approx(1.0)
+    assert learner.MixtureUnder(cloud, np.array([5.0, 0.0, 0.0])) is None
+    with pytest.raises(ValueError, match="period 0 s must be positive"):
+        perception.ContactFrictionLearner(registry, 0.0)
