@@ -8,8 +8,8 @@ height, share without ground, occupied voxels). `--contrast C` gives the box a t
     PYTHONPATH=build/python /usr/bin/python3 scripts/textureless_box.py [--contrast 0]
 
 Measured 2026-12-05 (docs/main_diagram.md): with no texture both models see most of the box as free space, and the
-cost-curve model more so (a flat cost curve spreads the confidence over the whole disparity range, so the cells in
-front of its middle get free evidence); the thesis' claim, that cost-curve probabilities keep such an obstacle
+cost-curve model more so (thesis eqs. 4.13-4.17 assume a surface on every ray, equally likely in every cell, so a
+flat cost curve makes the cells near the camera free); the thesis' claim, that cost-curve probabilities keep such an obstacle
 where WTA loses it, does not hold for this scene.
 """
 
