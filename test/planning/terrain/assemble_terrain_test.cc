@@ -214,6 +214,12 @@ OccupancyGrid FlatGrid() {
   }
   return grid;
 }
+// Columns 15..19 of FlatGrid() occupied up to z = 0.11 as well: a step 10 cm up.
+void OccupyStep(OccupancyGrid* grid) {
+  for (int c = 15; c < 20; ++c) {
+    for (int r = 0; r < 10; ++r) Occupy(grid, Eigen::Vector3d(0.025 + 0.05 * c, 0.025 + 0.05 * r, 0.11), 0.8);
+  }
+}
 void SetMixture(const MaterialRegistry& registry, FrictionPointCloud* cloud, int point,
                 const std::vector<std::pair<std::string, float>>& mixture) {
   cloud->weights.row(point).setZero();
@@ -264,9 +270,7 @@ TEST(AssembleTerrainTest, HeightOutliersLoseTheirGround) {
     if (p.x() >= 0.75) p.z() = 0.1;  // columns 15..19: a step
   }
   Occupy(&grid, Eigen::Vector3d(0.275, 0.275, 0.06), 0.8);
-  for (int c = 15; c < 20; ++c) {
-    for (int r = 0; r < 10; ++r) Occupy(&grid, Eigen::Vector3d(0.025 + 0.05 * c, 0.025 + 0.05 * r, 0.11), 0.8);
-  }
+  OccupyStep(&grid);
   EXPECT_NEAR(AssembleTerrain(grid, cloud, registry).height(5, 5), 0.05, 1e-6);
   TerrainAssemblyOptions options;
   options.outlier_height = 0.02;
@@ -292,9 +296,7 @@ TEST(AssembleTerrainTest, MedianHeightsFlattenNoiseAndKeepAStep) {
     // Columns 15..19: a step 10 cm up; every column off by up to 8 mm in a checkerboard-like pattern.
     p.z() = (c >= 15 ? 0.1 : 0.0) + 0.008 * (((c * 7 + r * 3) % 5) - 2) / 2.0;
   }
-  for (int c = 15; c < 20; ++c) {
-    for (int r = 0; r < 10; ++r) Occupy(&grid, Eigen::Vector3d(0.025 + 0.05 * c, 0.025 + 0.05 * r, 0.11), 0.8);
-  }
+  OccupyStep(&grid);
   TerrainAssemblyOptions options;
   options.outlier_radius = 0.1;
   EXPECT_GT(std::abs(AssembleTerrain(grid, cloud, registry, options).height(3, 3)), 0.003);
