@@ -172,4 +172,48 @@ std::string PerceptionReportPng(const planning::MainRecord& record, const percep
   return EncodePng(canvas, "the perception report");
 }
 
+std::vector<visualization::SceneBox> PerceivedTerrainBoxes(const planning::TerrainMap& terrain, std::size_t max_boxes) {
+  constexpr double kThickness = 0.01;
+  std::vector<visualization::SceneBox> boxes;
+  const double res = terrain.resolution();
+  for (int row = 0; row < terrain.rows(); ++row) {
+    int col = 0;
+    while (col < terrain.cols()) {
+      if (!terrain.has_ground(col, row)) {
+        ++col;
+        continue;
+      }
+      const double height = terrain.height(col, row), friction = terrain.friction(col, row);
+      int end = col + 1;
+      while (end < terrain.cols() && terrain.has_ground(end, row) &&
+             std::abs(terrain.height(end, row) - height) <= 0.002 &&
+             std::abs(terrain.friction(end, row) - friction) <= 0.005) {
+        ++end;
+      }
+      const Eigen::Vector2d lo = terrain.CellCenter(col, row) - Eigen::Vector2d::Constant(0.5 * res);
+      const Eigen::Vector3d centre(lo.x() + 0.5 * res * (end - col), lo.y() + 0.5 * res, height - 0.5 * kThickness);
+      boxes.push_back({"perceived ground", multibody::Pose(Eigen::Matrix3d::Identity(), centre),
+                       Eigen::Vector3d(res * (end - col), res, kThickness), friction});
+      col = end;
+    }
+  }
+  if (boxes.size() > max_boxes) {
+    throw std::invalid_argument("PerceivedTerrainBoxes: the ground alone takes " + std::to_string(boxes.size()) +
+                                " boxes, more than " + std::to_string(max_boxes) + "; coarsen the terrain");
+  }
+  std::vector<planning::TerrainMap::OccupiedVoxel> voxels = terrain.occupied_voxels();
+  const std::size_t room = max_boxes - boxes.size();
+  if (voxels.size() > room) {
+    std::stable_sort(voxels.begin(), voxels.end(),
+                     [](const auto& a, const auto& b) { return a.probability > b.probability; });
+    voxels.resize(room);
+  }
+  const double side = terrain.voxel_size();
+  for (const planning::TerrainMap::OccupiedVoxel& v : voxels) {
+    boxes.push_back({"occupied", multibody::Pose(Eigen::Matrix3d::Identity(), v.center), Eigen::Vector3d::Constant(side),
+                     0.0, v.probability});
+  }
+  return boxes;
+}
+
 }  // namespace cairn::cli

@@ -1,9 +1,12 @@
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "cairn/perception/friction/material_registry.h"
 #include "cairn/planning/run/main_diagram.h"
+#include "cairn/visualization/motion_html.h"
 
 namespace cairn::cli {
 
@@ -16,5 +19,12 @@ namespace cairn::cli {
 /// probabilities do not have one channel per registry label, std::runtime_error if encoding fails.
 std::string PerceptionReportPng(const planning::MainRecord& record, const perception::MaterialRegistry& registry,
                                 double eta);
+
+/// The perceived terrain as boxes of the 3-D viewer: each row's runs of ground cells of one friction (within 0.005)
+/// and height (within 2 mm) as one box 1 cm thick under the surface, coloured by friction, and the occupied voxels
+/// as cubes whose opacity is their probability. When they would be more than `max_boxes`, the least probable
+/// voxels are left out (the ground never is; throws std::invalid_argument if the ground alone exceeds it).
+std::vector<visualization::SceneBox> PerceivedTerrainBoxes(const planning::TerrainMap& terrain,
+                                                           std::size_t max_boxes = visualization::kMaxSceneBoxes);
 
 }  // namespace cairn::cli

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "cairn/common/atomic_output_directory.h"
 #include "cairn/common/json_writer.h"
 #include "cairn/common/number_text.h"
+#include "cairn/multibody/configuration.h"
 #include "cairn/multibody/data.h"
 #include "cairn/multibody/kinematics.h"
 #include "cairn/multibody/plant/joint_drive.h"
@@ -72,7 +74,7 @@ struct WalkArguments {
 bool IsWalkOutput(const std::string& name) {
   return name == "walk.json" || name == "walk_zmp.png" || name == "walk_com.png" || name == "walk_steps.png" ||
          name == "walk.html" || name == "terrain.png" || name == "run.json" || name == "timing.json" ||
-         name == "perception.png";
+         name == "perception.png" || name == "run.html";
 }
 
 // The material of the scenario's ground under (x, y): the last region containing it (later regions lie on earlier
@@ -152,6 +154,39 @@ void MaybeNumber(JsonWriter& json, const char* key, double value, JsonWriter::Nu
   } else {
     json.Null();
   }
+}
+
+// The walk's samples as the viewer's frames: 25 per second, fewer for a walk too long for the viewer's frame limit;
+// the last sample (a fall) is always a frame.
+void AddWalkFrames(const WalkRecord& record, visualization::MotionScene* scene) {
+  if (record.samples.empty()) return;
+  const auto every = std::max(static_cast<std::size_t>(std::lround(kViewerPeriod / kLogPeriod)),
+                              record.samples.size() / (visualization::kMaxMotionFrames - 1) + 1);
+  for (std::size_t k = 0; k < record.samples.size(); k += every) {
+    scene->times.push_back(record.samples[k].time);
+    scene->q.push_back(record.samples[k].q);
+  }
+  if ((record.samples.size() - 1) % every != 0) {
+    scene->times.push_back(record.samples.back().time);
+    scene->q.push_back(record.samples.back().q);
+  }
+}
+
+// The robot upright (every joint at its neutral value) between the stance's feet, its lowest sole on the ground:
+// where it stands when no walk was simulated.
+Eigen::VectorXd StandingAt(const multibody::Model& robot, const std::vector<std::string>& soles, const Stance& stance) {
+  Eigen::VectorXd q = multibody::NeutralConfiguration(robot);
+  q[0] = 0.5 * (stance.left.x + stance.right.x);
+  q[1] = 0.5 * (stance.left.y + stance.right.y);
+  q[2] = 0.0;
+  multibody::Data data(robot);
+  multibody::ForwardKinematics(robot, data, q);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const std::string& sole : soles) {
+    lowest = std::min(lowest, data.X_world[static_cast<std::size_t>(robot.GetBodyIndex(sole))].translation().z());
+  }
+  if (std::isfinite(lowest)) q[2] = std::max(stance.left.z, stance.right.z) - lowest;
+  return q;
 }
 
 // `perceived`: the terrain the main diagram planned on (`cairn run`), else null (`cairn walk`).
@@ -322,18 +357,21 @@ int Run(const WalkArguments& args) {
       for (const multibody::TerrainBox& box : setup.plant_terrain) {
         scene.boxes.push_back({box.name, box.X_WB, box.size, box.friction});
       }
-      // 25 frames per second, fewer for a walk too long for the viewer's frame limit.
-      const auto every = std::max(static_cast<std::size_t>(std::lround(kViewerPeriod / kLogPeriod)),
-                                  record.samples.size() / (visualization::kMaxMotionFrames - 1) + 1);
-      for (std::size_t k = 0; k < record.samples.size(); k += every) {
-        scene.times.push_back(record.samples[k].time);
-        scene.q.push_back(record.samples[k].q);
-      }
-      if ((record.samples.size() - 1) % every != 0) {  // the last sample (a fall) is always a frame
-        scene.times.push_back(record.samples.back().time);
-        scene.q.push_back(record.samples.back().q);
-      }
+      AddWalkFrames(record, &scene);
       out->WriteFile("walk.html", visualization::MotionHtml(*robot, scene));
+    }
+    if (perceived != nullptr) {
+      // What the robot saw: the perceived terrain and occupied cells, with the walk, or the robot at its start.
+      visualization::MotionScene scene;
+      scene.title = "cairn run: " + scenario.name() + ", the terrain as perceived";
+      scene.boxes = PerceivedTerrainBoxes(*perceived);
+      if (record.start.ready) {
+        AddWalkFrames(record, &scene);
+      } else {
+        scene.times.push_back(0.0);
+        scene.q.push_back(StandingAt(*robot, setup.plant.sole_bodies, scenario.start()));
+      }
+      out->WriteFile("run.html", visualization::MotionHtml(*robot, scene));
     }
     out->Commit();
   }
@@ -390,7 +428,7 @@ int Run(const WalkArguments& args) {
   if (out) {
     std::printf("wrote      %s/%s%s%s\n", args.out.c_str(),
                 args.perceive ? "run.json, timing.json" : "walk.json",
-                perceived ? ", perception.png, terrain.png" : "",
+                perceived ? ", perception.png, terrain.png, run.html" : "",
                 record.start.ready ? ", walk_zmp.png, walk_com.png, walk_steps.png, walk.html" : "");
   }
   return 0;
@@ -444,7 +482,7 @@ void RegisterWalkCommand(CommandRegistry* registry) {
         app.add_option("--segmenter", args->segmenter,
                        "Material segmenter: builtin:PATH or onnx:PATH (default: the built-in one in data/models)");
         app.add_option("--out", args->out,
-                       "Folder for run.json, timing.json, perception.png, terrain.png and, when walked, "
+                       "Folder for run.json, timing.json, perception.png, terrain.png, run.html and, when walked, "
                        "walk_zmp.png, walk_com.png, walk_steps.png, walk.html (replaced as a whole)");
         app.add_option("--oracle-cache", args->oracle_cache,
                        "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");

@@ -63,11 +63,14 @@ constexpr const char* kViewerScript = R"JS(
     object.quaternion.set(p[4], p[5], p[6], p[3]);
   };
   // Terrain: red for mu = 0 to green for mu >= 1.
+  // Occupied cells of perception: dark red, as opaque as they are probable.
   for (const box of scene_data.boxes) {
     const mu = Math.max(0, Math.min(1, box.friction));
-    const colour = new THREE.Color().setHSL(0.33 * mu, 0.55, 0.6);
-    const mesh = new THREE.Mesh(new THREE.BoxGeometry(box.size[0], box.size[1], box.size[2]),
-                                new THREE.MeshLambertMaterial({color: colour}));
+    const material = box.occupancy === undefined
+        ? new THREE.MeshLambertMaterial({color: new THREE.Color().setHSL(0.33 * mu, 0.55, 0.6)})
+        : new THREE.MeshLambertMaterial({color: 0x8b1a1a, transparent: true, opacity: 0.15 + 0.7 * box.occupancy,
+                                         depthWrite: false});
+    const mesh = new THREE.Mesh(new THREE.BoxGeometry(box.size[0], box.size[1], box.size[2]), material);
     setPose(mesh, box.pose);
     scene.add(mesh);
   }
@@ -193,6 +196,10 @@ std::string MotionHtml(const multibody::Model& model, const MotionScene& scene, 
     if (!(box.size.minCoeff() > 0.0) || !box.size.allFinite() || !box.X_WB.translation().allFinite()) {
       throw std::invalid_argument("MotionHtml: box '" + box.name + "' has a side that is not positive and finite");
     }
+    if (!(box.occupancy <= 1.0)) {
+      throw std::invalid_argument("MotionHtml: box '" + box.name + "' has occupancy " + FormatShort(box.occupancy) +
+                                  "; give a probability in [0, 1], or a negative value for a terrain box");
+    }
   }
   const std::string three = ReadThreeJs(three_js_path);
 
@@ -218,7 +225,9 @@ std::string MotionHtml(const multibody::Model& model, const MotionScene& scene, 
   }
   json.EndArray().Key("boxes").BeginArray();
   for (const SceneBox& box : scene.boxes) {
-    json.BeginObject().Key("name").String(box.name).Key("friction").Number(box.friction, f4).Key("size").BeginArray();
+    json.BeginObject().Key("name").String(box.name).Key("friction").Number(box.friction, f4);
+    if (box.occupancy >= 0.0) json.Key("occupancy").Number(box.occupancy, f4);
+    json.Key("size").BeginArray();
     for (int i = 0; i < 3; ++i) json.Number(box.size[i], f4);
     json.EndArray().Key("pose");
     WritePose(json, box.X_WB);
@@ -263,7 +272,8 @@ std::string MotionHtml(const multibody::Model& model, const MotionScene& scene, 
           "</style>\n</head>\n<body data-status=\"loading\">\n<div id=\"title\"></div>\n"
           "<div id=\"legend\">terrain friction: <span style=\"color:hsl(0,55%,50%)\">&#9632; 0</span> "
           "<span style=\"color:hsl(60,55%,50%)\">&#9632; 0.5</span> "
-          "<span style=\"color:hsl(120,55%,45%)\">&#9632; &ge; 1</span>; robot: collision shapes</div>\n"
+          "<span style=\"color:hsl(120,55%,45%)\">&#9632; &ge; 1</span>; <span style=\"color:#8b1a1a\">&#9632;</span> "
+          "occupied (opacity: probability); robot: collision shapes</div>\n"
           "<div id=\"view\"></div>\n<div id=\"bar\"><button id=\"play\">play</button>"
           "<input id=\"time\" type=\"range\" min=\"0\" max=\"0\" value=\"0\" step=\"1\" aria-label=\"time\">"
           "<span id=\"label\"></span></div>\n<script id=\"motion\" type=\"application/json\">";

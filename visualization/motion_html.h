@@ -16,6 +16,9 @@ struct SceneBox {
   multibody::Pose X_WB;                      ///< pose of the box centre
   Eigen::Vector3d size{Eigen::Vector3d::Ones()};  ///< full side lengths, m
   double friction{1.0};                     ///< shown as a colour: red (ice, 0) to green (>= 1)
+  /// In [0, 1]: the box is an occupied cell of perception instead, drawn dark red with this probability as its
+  /// opacity (friction is then not shown). Negative (the default): a terrain box coloured by friction.
+  double occupancy{-1.0};
 };
 
 /// A motion to show: configurations of a model over time among boxes.
@@ -42,7 +45,7 @@ std::string DefaultThreeJsPath();
 /// drew the first frame, or to "error: ..." when a script error happened (for headless checks). Throws
 /// std::invalid_argument for a scene with mismatched times and configurations, configurations of the wrong size,
 /// times that decrease or are not finite, more than kMaxMotionFrames frames or kMaxSceneBoxes boxes, a box of
-/// non-positive size; std::runtime_error when three.js cannot be read from `three_js_path` (install libjs-three).
+/// non-positive size or an occupancy above 1; std::runtime_error when three.js cannot be read from `three_js_path` (install libjs-three).
 std::string MotionHtml(const multibody::Model& model, const MotionScene& scene,
                        const std::string& three_js_path = DefaultThreeJsPath());
 

@@ -60,8 +60,8 @@ TEST(RunCommandTest, WritesTheRunThePerceptionAndThePerceivedTerrain) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("run        mock-up with an obstacle (objective ecom_heat, stabiliser fft)"));
   EXPECT_THAT(run.out, HasSubstr("perceived  terrain of 96 x 72 cells"));
-  EXPECT_THAT(run.out, HasSubstr("/run.json, timing.json, perception.png, terrain.png"));
-  for (const char* name : {"run.json", "timing.json", "perception.png", "terrain.png"}) {
+  EXPECT_THAT(run.out, HasSubstr("/run.json, timing.json, perception.png, terrain.png, run.html"));
+  for (const char* name : {"run.json", "timing.json", "perception.png", "terrain.png", "run.html"}) {
     ASSERT_TRUE(fs::exists(out / name)) << name;
   }
   EXPECT_FALSE(fs::exists(out / "walk.json"));
@@ -72,6 +72,11 @@ TEST(RunCommandTest, WritesTheRunThePerceptionAndThePerceivedTerrain) {
   const auto [width, height] = PngSize(report);
   EXPECT_GE(width, 3 * 320);
   EXPECT_GE(height, 240 + 72 * 4);
+  // The 3-D viewer shows the terrain as perceived, its occupied cells among it.
+  const std::string viewer = Slurp(out / "run.html");
+  EXPECT_THAT(viewer, HasSubstr("the terrain as perceived"));
+  EXPECT_THAT(viewer, HasSubstr("\"name\": \"perceived ground\""));
+  EXPECT_THAT(viewer, HasSubstr("\"name\": \"occupied\""));
   const nlohmann::json timing = nlohmann::json::parse(Slurp(out / "timing.json"));
   for (const char* stage : {"perception_s", "footsteps_s", "trajectory_s", "stabilizer_s", "plant_s"}) {
     EXPECT_GE(timing.at(stage).get<double>(), 0.0) << stage;

@@ -34,7 +34,8 @@ const multibody::Model& Humanoid() {
   return model;
 }
 
-// The humanoid standing and then stepping 0.2 m forward over 1 s, on ground with an ice patch.
+// The humanoid standing and then stepping 0.2 m forward over 1 s, on ground with an ice patch, beside a cell that
+// perception found occupied with probability 0.7.
 MotionScene Scene() {
   MotionScene scene;
   scene.title = "test scene";
@@ -49,7 +50,9 @@ MotionScene Scene() {
                   Eigen::Vector3d(3.0, 2.0, 1.0), 1.0};
   SceneBox ice{"ice", multibody::Pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1.0, 0.0, -0.499)),
                Eigen::Vector3d(0.5, 0.5, 1.0), 0.06};
-  scene.boxes = {ground, ice};
+  SceneBox cell{"occupied", multibody::Pose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.6, 0.4, 0.3)),
+                Eigen::Vector3d(0.05, 0.05, 0.05), 1.0, 0.7};
+  scene.boxes = {ground, ice, cell};
   return scene;
 }
 
@@ -59,7 +62,8 @@ TEST(MotionHtmlTest, InlinesThreeJsAndEmbedsOnePoseOfEveryShapePerFrame) {
   EXPECT_EQ(html.find("<script src"), std::string::npos);  // nothing fetched: it works offline
   EXPECT_NE(html.find("WebGLRenderer"), std::string::npos);
   EXPECT_NE(html.find("\"title\": \"test scene\""), std::string::npos);
-  EXPECT_NE(html.find("\"name\": \"ice\", \"friction\": 0.0600"), std::string::npos);
+  EXPECT_NE(html.find("\"name\": \"ice\", \"friction\": 0.0600, \"size\""), std::string::npos);
+  EXPECT_NE(html.find("\"name\": \"occupied\", \"friction\": 1.0000, \"occupancy\": 0.7000"), std::string::npos);
   int shapes = 0;
   for (const multibody::Body& body : Humanoid().bodies()) {
     for (const multibody::Geometry& g : body.collisions) shapes += g.type != multibody::GeometryType::kMesh;
@@ -89,6 +93,10 @@ TEST(MotionHtmlTest, RefusesABadSceneWithAMessage) {
   scene = Scene();
   scene.boxes[1].size.z() = 0.0;
   CAIRN_EXPECT_THROWS_WITH(MotionHtml(Humanoid(), scene), std::invalid_argument, "box 'ice' has a side");
+  scene = Scene();
+  scene.boxes[2].occupancy = 1.5;
+  CAIRN_EXPECT_THROWS_WITH(MotionHtml(Humanoid(), scene), std::invalid_argument,
+                           "box 'occupied' has occupancy 1.5; give a probability in [0, 1]");
   CAIRN_EXPECT_THROWS_WITH(MotionHtml(Humanoid(), Scene(), "/nonexistent/three.min.js"), std::runtime_error,
                            "cannot read three.js from '/nonexistent/three.min.js'; install Debian's libjs-three");
 }
