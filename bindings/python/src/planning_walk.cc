@@ -178,7 +178,9 @@ void DefineVisualization(py::module_ m) {
       .def_readwrite("name", &SceneBox::name, "Name.")
       .def_readwrite("X_WB", &SceneBox::X_WB, "Pose of the box centre.")
       .def_readwrite("size", &SceneBox::size, "Full side lengths, m.")
-      .def_readwrite("friction", &SceneBox::friction, "Shown red (0) to green (>= 1).");
+      .def_readwrite("friction", &SceneBox::friction, "Shown red (0) to green (>= 1).")
+      .def_readwrite("occupancy", &SceneBox::occupancy,
+                     "In [0, 1]: an occupied cell drawn dark red with this opacity; negative: a terrain box.");
   py::class_<MotionScene>(m, "MotionScene", "A model's configurations over time among boxes.")
       .def(py::init<>(), "Empty.")
       .def_readwrite("title", &MotionScene::title, "Page title.")

@@ -166,8 +166,12 @@ def test_the_viewer_page_inlines_three_js_and_refuses_a_bad_scene(robot, tmp_pat
     scene.boxes = [box]
     q = mb.NeutralConfiguration(robot)
     scene.times, scene.q = [0.0, 0.5], [q, q]
+    cell = viz.SceneBox()
+    cell.name, cell.size, cell.occupancy = "occupied", np.array([0.05, 0.05, 0.05]), 0.7
+    scene.boxes = [box, cell]
     page = viz.MotionHtml(robot, scene)
     assert page.startswith("<!DOCTYPE html>") and "standing" in page and "THREE" in page
+    assert '"occupancy": 0.7000' in page
     scene.times = [0.5, 0.0]
     with pytest.raises(ValueError, match="comes before the previous frame"):
         viz.MotionHtml(robot, scene)
