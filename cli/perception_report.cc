@@ -71,6 +71,11 @@ std::string PerceptionReportPng(const planning::MainRecord& record, const percep
                                 "frame was perceived)");
   }
   const int labels = registry.size();
+  if (record.image.type() != CV_8UC3 || record.material_probabilities.depth() != CV_32F ||
+      record.friction_quantile.type() != CV_32FC1) {
+    throw std::invalid_argument("PerceptionReportPng: the image must be 8-bit BGR and the probabilities and quantiles "
+                                "32-bit float, as the main diagram makes them");
+  }
   if (record.material_probabilities.channels() != labels ||
       record.material_probabilities.size() != record.image.size() ||
       record.friction_quantile.size() != record.image.size()) {
@@ -105,7 +110,8 @@ std::string PerceptionReportPng(const planning::MainRecord& record, const percep
   // occupied cells.
   const perception::OccupancyGrid& grid = *record.grid;
   const Eigen::Vector3i dims = grid.dims();
-  const int cell_pixels = std::max(1, static_cast<int>(std::floor(384.0 / std::max(dims.x(), 1))));
+  // The grid's longest side gets at most 384 pixels in either panel.
+  const int cell_pixels = std::max(1, static_cast<int>(std::floor(384.0 / std::max({dims.x(), dims.y(), dims.z(), 1}))));
   cv::Mat top(dims.y(), dims.x(), CV_8UC3), slice(dims.z(), dims.x(), CV_8UC3);
   int slice_row = 0, most = -1;
   for (int y = 0; y < dims.y(); ++y) {

@@ -486,7 +486,7 @@ void RegisterWalkCommand(CommandRegistry* registry) {
                        "walk_zmp.png, walk_com.png, walk_steps.png, walk.html (replaced as a whole)");
         app.add_option("--oracle-cache", args->oracle_cache,
                        "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
-        app.add_flag("--json", args->json, "Print walk.json and the stages' wall times as one JSON object");
+        app.add_flag("--json", args->json, "Print run.json and the stages' wall times as one JSON object");
         return [args] { return Run(*args); };
       });
 }

@@ -60,8 +60,9 @@ bool ContactFrictionLearner::MixtureUnder(const FrictionPointCloud& points, cons
   int n = 0;
   for (int i = 0; i < points.size(); ++i) {
     const Eigen::Vector3d& p = points.points_W[static_cast<std::size_t>(i)];
-    if (std::hypot(p.x() - position_W.x(), p.y() - position_W.y()) > radius_) continue;
-    if (std::abs(p.z() - position_W.z()) > height_window_) continue;
+    // Written so that a NaN coordinate matches nothing.
+    if (!(std::hypot(p.x() - position_W.x(), p.y() - position_W.y()) <= radius_)) continue;
+    if (!(std::abs(p.z() - position_W.z()) <= height_window_)) continue;
     *mixture += points.weights.row(i).transpose().cast<double>();
     ++n;
   }
@@ -88,8 +89,14 @@ void ContactFrictionLearner::Learn(const systems::Context& context, systems::Sta
       ++learning.skipped;
       continue;
     }
-    learning.registry.UpdateFromContact(mixture, contacts[k].observation);
-    ++learning.learned;
+    try {
+      learning.registry.UpdateFromContact(mixture, contacts[k].observation);
+      ++learning.learned;
+    } catch (const std::invalid_argument&) {
+      // The registry cannot use it (a bad value, or materials under the foot that cannot learn): a contact the
+      // learner reads once and sets aside, rather than one that stops every later update.
+      ++learning.rejected;
+    }
   }
 }
 

@@ -27,6 +27,8 @@ struct ContactLearning {
   int seen{0};      ///< contacts of the log already read
   int learned{0};   ///< of those, the ones that updated the registry
   int skipped{0};   ///< of those, the ones with no perceived point under the foot (no material to credit)
+  int rejected{0};  ///< of those, the ones MaterialRegistry::UpdateFromContact refused (bad value, or labels that
+                    ///< cannot learn, e.g. a "held" on not-walkable materials)
 };
 
 /// Learning from touch (thesis 6.3.1 names it as the missing feedback; issue 18): each new contact of the log on
@@ -34,7 +36,8 @@ struct ContactLearning {
 /// MaterialRegistry::UpdateFromContact: the material mixture is the mean of the friction points' mixtures within
 /// `radius` (horizontally) and `height_window` (vertically) of the contact point, so a slip on what looked like
 /// ceramic lowers ceramic's distribution, in proportion to how sure the segmenter was. A contact with no point
-/// under it teaches nothing and is counted as skipped.
+/// under it teaches nothing and is counted as skipped; one the registry refuses (UpdateFromContact throws) is
+/// counted as rejected, and learning goes on with the next.
 ///
 /// | port | type | meaning |
 /// |---|---|---|

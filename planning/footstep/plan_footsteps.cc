@@ -53,23 +53,39 @@ std::string CheckGoalFoothold(StanceGraph& graph, const TerrainMap& terrain, Foo
   StanceGraph::LatticeFoot foot;
   const std::string exact = CheckFoothold(graph, terrain, "goal", side, pose, &foot);
   if (exact.empty() || !graph.Snap(pose, &foot)) return exact;
-  const int reach = static_cast<int>(std::floor(goal.position_tolerance / options.lattice_resolution + 1e-9));
-  const int turns = static_cast<int>(std::floor(goal.yaw_tolerance / (2.0 * M_PI / options.orientations) + 1e-9));
+  // The lattice feet around the snapped one, one step further than the tolerances (rounding), each kept if it lies
+  // within them as StanceGraph::IsGoal judges. Candidates are poses snapped back onto the lattice, so none lies
+  // outside it; a tolerance wider than the map is bounded by the map.
+  const double step = options.lattice_resolution, turn = 2.0 * M_PI / options.orientations;
+  const double cells = std::ceil(std::hypot(terrain.max_corner().x() - terrain.min_corner().x(),
+                                            terrain.max_corner().y() - terrain.min_corner().y()) / step);
+  const int reach = static_cast<int>(std::min(std::ceil(goal.position_tolerance / step), cells)) + 1;
+  const int turns = std::min(static_cast<int>(std::min(std::ceil(goal.yaw_tolerance / turn), 1e6)) + 1,
+                             options.orientations / 2);
+  const FootPose centre = graph.PoseOf(foot);
   for (int dy = -reach; dy <= reach; ++dy) {
     for (int dx = -reach; dx <= reach; ++dx) {
-      for (int dt = -std::min(turns, options.orientations / 2); dt <= std::min(turns, options.orientations / 2); ++dt) {
-        StanceGraph::LatticeFoot near{foot.ix + dx, foot.iy + dy,
-                                      ((foot.itheta + dt) % options.orientations + options.orientations) %
-                                          options.orientations};
-        StanceGraph::LatticeFoot snapped;
-        const FootPose candidate = graph.PoseOf(near);
-        if (std::hypot(candidate.x - pose.x, candidate.y - pose.y) > goal.position_tolerance) continue;
-        if (!graph.Snap(candidate, &snapped)) continue;
-        if (graph.EvaluateFoothold(snapped).supported) return "";
+      for (int dt = -turns; dt <= turns; ++dt) {
+        FootPose candidate = centre;
+        candidate.x += dx * step;
+        candidate.y += dy * step;
+        candidate.theta += dt * turn;
+        StanceGraph::LatticeFoot near;
+        if (!graph.Snap(candidate, &near)) continue;
+        const FootPose at = graph.PoseOf(near);
+        if (std::hypot(at.x - pose.x, at.y - pose.y) > goal.position_tolerance ||
+            std::abs(std::remainder(at.theta - pose.theta, 2.0 * M_PI)) > goal.yaw_tolerance) {
+          continue;
+        }
+        if (graph.EvaluateFoothold(near).supported) return "";
       }
     }
   }
-  return exact + ", nor is any foothold within the goal's tolerance";
+  std::ostringstream reason;
+  reason << exact << ", nor is any foothold within the goal's tolerance (" << std::setprecision(3)
+         << goal.position_tolerance << " m, " << goal.yaw_tolerance
+         << " rad); move the goal or widen its tolerance";
+  return reason.str();
 }
 
 using Clock = std::chrono::steady_clock;

@@ -21,13 +21,15 @@ void Require(bool ok, const char* name, double value, const char* range) {
   }
 }
 
-// Removes the ground of the cells TerrainAssemblyOptions::outlier_height names, judged on the ground as perceived.
+// Removes the ground of the cells TerrainAssemblyOptions::outlier_height names, judged on the ground as perceived
+// (a window of fewer than 3 cells judges nothing), and marks in `raised` those that stood above their window's
+// median: something standing on the floor, too narrow for the window, which must stay an obstacle, not be bridged.
 void RemoveHeightOutliers(int cols, int rows, double res, const TerrainAssemblyOptions& options,
-                          std::vector<double>* height) {
+                          std::vector<double>* height, std::vector<char>* raised) {
   const std::vector<double> seen = *height;
-  const int k = std::max(1, static_cast<int>(std::floor(options.outlier_radius / res + 1e-9)));
+  const int k = std::clamp(static_cast<int>(std::floor(std::min(options.outlier_radius / res, 1e6) + 1e-9)), 1,
+                           std::max(cols, rows));
   std::vector<double> window;
-  window.reserve(static_cast<std::size_t>((2 * k + 1) * (2 * k + 1)));
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
       const std::size_t column = static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c);
@@ -39,10 +41,12 @@ void RemoveHeightOutliers(int cols, int rows, double res, const TerrainAssemblyO
           if (!std::isnan(h)) window.push_back(h);
         }
       }
+      if (window.size() < 3) continue;
       const auto middle = window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2);
       std::nth_element(window.begin(), middle, window.end());
       if (options.outlier_height > 0.0 && std::abs(seen[column] - *middle) > options.outlier_height) {
         (*height)[column] = std::nan("");
+        (*raised)[column] = seen[column] > *middle ? 1 : 0;
       } else if (options.median_heights) {
         (*height)[column] = *middle;
       }
@@ -50,18 +54,19 @@ void RemoveHeightOutliers(int cols, int rows, double res, const TerrainAssemblyO
   }
 }
 
-// Bridges the gaps of TerrainAssemblyOptions::max_gap in place. Every gap cell is decided on the ground as
-// perceived (bridged cells do not bridge further), along the axis whose two sides lie closer together.
-void BridgeGaps(int cols, int rows, double res, const TerrainAssemblyOptions& options, std::vector<double>* height,
-                std::vector<double>* friction) {
+// Bridges the gaps of TerrainAssemblyOptions::max_gap in place, except the cells `raised` marks. Every gap cell is
+// decided on the ground as perceived (bridged cells do not bridge further), along the axis whose two sides lie
+// closer together.
+void BridgeGaps(int cols, int rows, double res, const TerrainAssemblyOptions& options, const std::vector<char>& raised,
+                std::vector<double>* height, std::vector<double>* friction) {
   const std::vector<double> seen_height = *height;
   const std::vector<double> seen_friction = *friction;
-  const int reach = static_cast<int>(std::floor(options.max_gap / res + 1e-9));
+  const int reach = static_cast<int>(std::floor(std::min(options.max_gap / res, static_cast<double>(std::max(cols, rows))) + 1e-9));
   auto index = [cols](int c, int r) { return static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c); };
   auto has = [&](int c, int r) { return c >= 0 && r >= 0 && c < cols && r < rows && !std::isnan(seen_height[index(c, r)]); };
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
-      if (has(c, r)) continue;
+      if (has(c, r) || raised[index(c, r)]) continue;
       int best_span = reach + 2;
       for (const auto& [dc, dr] : {std::pair<int, int>{1, 0}, {0, 1}}) {
         int a = 1, b = 1;
@@ -230,8 +235,11 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
       friction[column] = perception::FrictionQuantile(registry, weights, options.eta, options.quantile_method);
     }
   }
-  if (options.outlier_height > 0.0 || options.median_heights) RemoveHeightOutliers(cols, rows, res, options, &height);
-  if (options.max_gap > 0.0) BridgeGaps(cols, rows, res, options, &height, &friction);
+  std::vector<char> raised(columns, 0);
+  if (options.outlier_height > 0.0 || options.median_heights) {
+    RemoveHeightOutliers(cols, rows, res, options, &height, &raised);
+  }
+  if (options.max_gap > 0.0) BridgeGaps(cols, rows, res, options, raised, &height, &friction);
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
       const std::size_t column = static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c);
@@ -241,12 +249,13 @@ TerrainMap AssembleTerrain(const perception::OccupancyGrid& grid, const percepti
     }
   }
 
-  // Everything occupied above the ground cell is an obstacle for the body, with its probability.
+  // Everything occupied above the ground cell is an obstacle for the body, with its probability; so is the ground
+  // cell of a column that lost its ground for standing above its neighbours.
   std::vector<TerrainMap::OccupiedVoxel> voxels;
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
       const std::size_t column = static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c);
-      for (int k = ground_layer[column] + 1; k < layers; ++k) {
+      for (int k = ground_layer[column] + (raised[column] ? 0 : 1); k < layers; ++k) {
         const Eigen::Vector3i cell(c, r, k);
         const double p = grid.probability(grid.Index(cell));
         if (p <= options.occupied_threshold) continue;

@@ -38,8 +38,9 @@ struct TerrainAssemblyOptions {
   /// A ground cell whose height differs from the median height of the ground within `outlier_radius` (m, a square
   /// window) by more than `outlier_height` (m) loses its ground: a single frame's stereo mismatches on a surface
   /// without texture leave cells centimetres above or below it (measured on the mock-up's tiles: from -5 to +6 cm).
-  /// The gaps this leaves may be bridged (max_gap). 0 (the default) keeps every cell; an edge narrower than the
-  /// window (a kerb seen by only a few cells) is lost with it, so keep the window small.
+  /// A cell that stood above the median keeps its occupied cells as obstacle voxels (a post narrower than the
+  /// window is an obstacle, not a floor) and is never bridged; one below it leaves a gap that may be (max_gap). A
+  /// window of fewer than 3 ground cells judges nothing. 0 (the default) keeps every cell.
   double outlier_height{0.0};
   double outlier_radius{0.05};
   /// Every ground cell (that outlier_height keeps) takes the median height of the ground within outlier_radius: a

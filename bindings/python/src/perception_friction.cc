@@ -372,7 +372,8 @@ void DefinePerceptionFriction(py::module_ m) {
       .def_readonly("registry", &ContactLearning::registry, "The learned MaterialRegistry.")
       .def_readonly("seen", &ContactLearning::seen, "Contacts of the log read.")
       .def_readonly("learned", &ContactLearning::learned, "Contacts that updated the registry.")
-      .def_readonly("skipped", &ContactLearning::skipped, "Contacts with no perceived point under the foot.");
+      .def_readonly("skipped", &ContactLearning::skipped, "Contacts with no perceived point under the foot.")
+      .def_readonly("rejected", &ContactLearning::rejected, "Contacts the registry refused.");
   py::class_<ContactFrictionLearner, systems::LeafSystem>(
       m, "ContactFrictionLearner",
       "System: inputs `contacts` (list of FootContact, append-only) and `friction_points` (FrictionPointCloud); "

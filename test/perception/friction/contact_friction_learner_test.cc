@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -86,11 +87,22 @@ TEST(ContactFrictionLearnerTest, CreditsSlipsToTheMaterialsSeenUnderTheFoot) {
   const MaterialRegistry& blamed = fresh.learning(*mixed).registry;
   EXPECT_LT(mean(blamed, "marble"), mean(table, "marble") - 0.3);
   EXPECT_NEAR(mean(blamed, "ceramic"), mean(table, "ceramic"), 1e-3);
+  // A contact the registry cannot use (a measurement of friction 20) and one at a NaN position: set aside, and
+  // learning goes on.
+  log.push_back({Eigen::Vector3d(0.5, 0.0, 0.0), ContactObservation::Measured(20.0, 0.05)});
+  log.push_back({Eigen::Vector3d(std::nan(""), 0.0, 0.0), ContactObservation::Slipped(0.3)});
+  log.push_back(Slip(0.4, 0.1, 0.3));
+  learner.get_contacts_input_port().FixValue(context.get(), log);
+  learner.ExecuteForcedEvents(context.get());
+  EXPECT_EQ(learner.learning(*context).seen, 7);
+  EXPECT_EQ(learner.learning(*context).rejected, 1);
+  EXPECT_EQ(learner.learning(*context).skipped, 2);
+  EXPECT_EQ(learner.learning(*context).learned, 4);
   // A shorter log is not a continuation of this one.
   log.resize(2);
   learner.get_contacts_input_port().FixValue(context.get(), log);
   CAIRN_EXPECT_THROWS_WITH(learner.ExecuteForcedEvents(context.get()), std::logic_error,
-                           "the contact log shrank from 4 to 2 contacts");
+                           "the contact log shrank from 7 to 2 contacts");
 }
 
 // The learned registry is saved atomically and reads back as learned.

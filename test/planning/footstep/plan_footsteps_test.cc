@@ -259,9 +259,16 @@ TEST(PlanFootstepsTest, AGoalFootholdWithoutSupportIsReplacedByOneWithinTheToler
   const FootstepPlan none = PlanFootsteps(ground, StanceAt(0.0), goal, model, BipedGeometry{}, Options());
   EXPECT_FALSE(none.found);
   EXPECT_NE(none.reason.find("goal right foot at (1.80, -0.10) is not supported: the ground there is not walkable "
-                             "(friction 0), nor is any foothold within the goal's tolerance"),
+                             "(friction 0), nor is any foothold within the goal's tolerance (0.1 m, 0.27 rad); move the goal or "
+                             "widen its tolerance"),
             std::string::npos)
       << none.reason;
+  // At the map's edge, the footholds around the goal that would lie off the lattice are not looked at.
+  TerrainMap edge = FlatGround(-0.5, -1.0, 2.5, 1.0, 1.0);
+  Paint(&edge, 2.4, -1.0, 2.5, 0.0, 0.0, 0.0);
+  const FootstepPlan at_edge = PlanFootsteps(edge, StanceAt(0.0), GoalAt(2.45), model, BipedGeometry{}, Options());
+  EXPECT_FALSE(at_edge.found);
+  EXPECT_NE(at_edge.reason.find("nor is any foothold within the goal's tolerance"), std::string::npos) << at_edge.reason;
 }
 
 TEST(PlanFootstepsTest, ReturnsTheBestPlanSoFarWhenStoppedEarly) {

@@ -150,7 +150,7 @@ TEST(MainDiagramTest, IsOneDiagramFromTheCameraToThePlant) {
 
 // What the head camera's first frame makes of the mock-up (measured 2026-12-05, docs/main_diagram.md): the wood is
 // reconstructed everywhere the camera looks, at its height, and all of it is walkable at its friction quantile; the
-// ceramic tiles, nearly textureless between their joints, are reconstructed in part (about 77 % once the cells a
+// ceramic tiles, nearly textureless between their joints, are reconstructed in part (about 73 % once the cells a
 // mismatch put centimetres off the floor are dropped), and about 90 % of that is walkable at the ceramic's quantile
 // (the points of a cell fused as independent looks at its material). Behind the camera's view nothing is known.
 TEST(MainDiagramTest, PerceivesTheMockupsGroundAndFriction) {

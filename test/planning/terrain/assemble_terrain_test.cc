@@ -282,6 +282,11 @@ TEST(AssembleTerrainTest, HeightOutliersLoseTheirGround) {
   }
   EXPECT_NEAR(terrain.height(15, 5), 0.1, 1e-6);
   EXPECT_NEAR(terrain.height(14, 5), 0.0, 1e-6);
+  // What stood 5 cm above the floor, too narrow for the window, stays an obstacle, and is not bridged as floor.
+  ASSERT_EQ(terrain.occupied_voxels().size(), 1u);
+  EXPECT_TRUE(terrain.occupied_voxels()[0].center.isApprox(Eigen::Vector3d(0.275, 0.275, 0.075), 1e-9));
+  options.max_gap = 0.1;
+  EXPECT_FALSE(AssembleTerrain(grid, cloud, registry, options).has_ground(5, 5));
 }
 
 // A single frame's centimetre noise on a level floor: median_heights gives each cell its neighbourhood's median,
