@@ -11,7 +11,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -21,7 +20,6 @@
 #include "cairn/common/atomic_output_directory.h"
 #include "cairn/common/json_writer.h"
 #include "cairn/common/number_text.h"
-#include "cairn/multibody/configuration.h"
 #include "cairn/multibody/data.h"
 #include "cairn/multibody/kinematics.h"
 #include "cairn/multibody/plant/joint_drive.h"
@@ -170,23 +168,6 @@ void AddWalkFrames(const WalkRecord& record, visualization::MotionScene* scene) 
     scene->times.push_back(record.samples.back().time);
     scene->q.push_back(record.samples.back().q);
   }
-}
-
-// The robot upright (every joint at its neutral value) between the stance's feet, its lowest sole on the ground:
-// where it stands when no walk was simulated.
-Eigen::VectorXd StandingAt(const multibody::Model& robot, const std::vector<std::string>& soles, const Stance& stance) {
-  Eigen::VectorXd q = multibody::NeutralConfiguration(robot);
-  q[0] = 0.5 * (stance.left.x + stance.right.x);
-  q[1] = 0.5 * (stance.left.y + stance.right.y);
-  q[2] = 0.0;
-  multibody::Data data(robot);
-  multibody::ForwardKinematics(robot, data, q);
-  double lowest = std::numeric_limits<double>::infinity();
-  for (const std::string& sole : soles) {
-    lowest = std::min(lowest, data.X_world[static_cast<std::size_t>(robot.GetBodyIndex(sole))].translation().z());
-  }
-  if (std::isfinite(lowest)) q[2] = std::max(stance.left.z, stance.right.z) - lowest;
-  return q;
 }
 
 // `perceived`: the terrain the main diagram planned on (`cairn run`), else null (`cairn walk`).
@@ -369,7 +350,7 @@ int Run(const WalkArguments& args) {
         AddWalkFrames(record, &scene);
       } else {
         scene.times.push_back(0.0);
-        scene.q.push_back(StandingAt(*robot, setup.plant.sole_bodies, scenario.start()));
+        scene.q.push_back(StandingAtStart(*robot, setup.plant.sole_bodies, scenario.start()));
       }
       out->WriteFile("run.html", visualization::MotionHtml(*robot, scene));
     }

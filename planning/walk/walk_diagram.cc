@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -21,8 +22,9 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Joints at zero, the base above the start stance's midpoint and heading, the lower sole on its height.
-Eigen::VectorXd StandingAtStart(const multibody::Model& robot, const multibody::HumanoidPlantOptions& options,
+}  // namespace
+
+Eigen::VectorXd StandingAtStart(const multibody::Model& robot, const std::vector<std::string>& sole_bodies,
                                 const Stance& start) {
   Eigen::VectorXd q = multibody::NeutralConfiguration(robot);
   const double yaw = 0.5 * (start.left.theta + start.right.theta);
@@ -34,14 +36,12 @@ Eigen::VectorXd StandingAtStart(const multibody::Model& robot, const multibody::
   multibody::Data data(robot);
   multibody::ForwardKinematics(robot, data, q);
   double lowest = std::numeric_limits<double>::infinity();
-  for (const std::string& sole : options.sole_bodies) {
+  for (const std::string& sole : sole_bodies) {
     lowest = std::min(lowest, data.X_world[static_cast<std::size_t>(robot.GetBodyIndex(sole))].translation().z());
   }
-  q[2] = std::max(start.left.z, start.right.z) - lowest;
+  if (std::isfinite(lowest)) q[2] = std::max(start.left.z, start.right.z) - lowest;
   return q;
 }
-
-}  // namespace
 
 WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_ptr<const StepCostModel> cost_model,
                                 std::shared_ptr<const WalkingModel> walking_model, WalkingObjective objective,
@@ -93,7 +93,7 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
   auto* player = builder->AddNamedSystem<StabilizedReferencePlayer>("player", setup.robot);
   auto* plant = builder->AddNamedSystem<multibody::HumanoidPlant>(
       "plant", *setup.robot, setup.plant_terrain, *setup.controller,
-      StandingAtStart(*setup.robot, setup.plant, setup.start), setup.plant);
+      StandingAtStart(*setup.robot, setup.plant.sole_bodies, setup.start), setup.plant);
   builder->Connect(*terrain_source, footsteps->get_terrain_input_port());
   builder->Connect(start->GetOutputPort("y0"), footsteps->get_start_input_port());
   builder->Connect(goal->GetOutputPort("y0"), footsteps->get_goal_input_port());

@@ -105,6 +105,8 @@ void DefinePlanningWalk(py::module_ m) {
       },
       py::arg("scenario"), py::arg("cost_model"), py::arg("walking_model"), py::arg("objective"), py::arg("robot"),
       py::arg("controller"), "The scenario's walk with its terrain, start, goal, obstacles and plant boxes.");
+  m.def("StandingAtStart", &StandingAtStart, py::arg("robot"), py::arg("sole_bodies"), py::arg("start"),
+        "The robot standing at a stance: neutral joints, base over the feet, lowest sole on the ground.");
 
   py::class_<WalkDiagram>(m, "WalkDiagram", "The walk diagram and its blocks (from BuildWalkDiagram).")
       .def_property_readonly(

@@ -164,7 +164,12 @@ def test_the_viewer_page_inlines_three_js_and_refuses_a_bad_scene(robot, tmp_pat
     box = viz.SceneBox()
     box.name, box.size, box.friction = "floor", np.array([2.0, 2.0, 0.1]), 0.8
     scene.boxes = [box]
-    q = mb.NeutralConfiguration(robot)
+    stance = planning.Stance()
+    stance.left, stance.right = planning.FootPose(0.5, 0.1, 0.0, 0.0), planning.FootPose(0.5, -0.1, 0.0, 0.0)
+    q = planning.StandingAtStart(robot, ["l_sole", "r_sole"], stance)
+    assert q[0] == pytest.approx(0.5) and q[1] == pytest.approx(0.0) and q[2] > 0.5
+    with pytest.raises(ValueError, match="unknown body 'left_foot_sole'"):
+        planning.StandingAtStart(robot, ["left_foot_sole"], stance)
     scene.times, scene.q = [0.0, 0.5], [q, q]
     cell = viz.SceneBox()
     cell.name, cell.size, cell.occupancy = "occupied", np.array([0.05, 0.05, 0.05]), 0.7
