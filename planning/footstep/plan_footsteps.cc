@@ -98,10 +98,11 @@ double SecondsLeft(Clock::time_point deadline) {
 }
 
 // The search found no plan although it was not stopped: tell "every way needs more friction" from "no way at
-// all" by planning again with friction ignored, within what is left of the time limit.
+// all" by planning again with friction ignored, within what is left of the time limit. What the second search met
+// is what "no way at all" is made of, so its counts are the ones reported (the first may have expanded nothing:
+// with friction, no start's heuristic was finite).
 std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& starts, const FootstepPlannerOptions& options,
-                     const FootstepPlanStatistics& statistics, const StepCostModel& cost_model,
-                     Clock::time_point deadline) {
+                     const StepCostModel& cost_model, Clock::time_point deadline) {
   std::ostringstream reason;
   try {
     graph.set_ignore_friction(true, deadline);
@@ -117,6 +118,7 @@ std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& st
            << " m) of the last and clear of obstacles, connects the start to the goal";
     return reason.str();
   }
+  const FootstepPlanStatistics before = graph.rejections();
   AraStarOptions relaxed = options.search;
   relaxed.initial_epsilon = std::max(relaxed.initial_epsilon, 3.0);
   relaxed.final_epsilon = relaxed.initial_epsilon;  // the first plan answers the question
@@ -130,9 +132,10 @@ std::string Diagnose(StanceGraph& graph, const std::vector<StanceGraph::Key>& st
     reason << std::setprecision(3) << "every way to the goal needs more friction than the terrain offers (a path "
            << "ignoring friction needs an RCOF of " << needed << "); lower eta to accept more risk or choose another goal";
   } else if (frictionless.exhausted) {
-    reason << "the goal is unreachable: no sequence of supported, collision-free steps leads there ("
-           << statistics.expansions << " stances expanded, " << statistics.rejected_support
-           << " footholds without support, " << statistics.rejected_collision << " stances in collision)";
+    reason << "the goal is unreachable: no sequence of supported, collision-free steps leads there (with friction "
+           << "ignored, " << frictionless.expansions << " stances expanded, "
+           << graph.rejections().rejected_support - before.rejected_support << " footholds without support, "
+           << graph.rejections().rejected_collision - before.rejected_collision << " stances in collision)";
   } else {
     reason << "no plan: the search found none, and within the budget it could not tell whether friction or the "
               "terrain's shape blocks the way";
@@ -224,7 +227,7 @@ FootstepPlan PlanOnStanceGraph(StanceGraph& graph, const TerrainMap& terrain, co
            << (result.time_limit_reached ? " s" : "") << ", " << result.expansions
            << " stances expanded); raise the limit or start with a larger initial epsilon";
   } else {
-    reason << Diagnose(graph, starts, options, plan.statistics, cost_model, deadline);
+    reason << Diagnose(graph, starts, options, cost_model, deadline);
   }
   plan.reason = reason.str();
   plan.statistics.plan_seconds = seconds();
