@@ -26,6 +26,10 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 
 Eigen::VectorXd StandingAtStart(const multibody::Model& robot, const std::vector<std::string>& sole_bodies,
                                 const Stance& start) {
+  if (robot.num_bodies() < 2 || robot.joint(1).type != multibody::JointType::kFloating) {
+    throw std::invalid_argument("StandingAtStart: model '" + robot.name() +
+                                "' has no floating base; load the URDF with a floating base");
+  }
   Eigen::VectorXd q = multibody::NeutralConfiguration(robot);
   const double yaw = 0.5 * (start.left.theta + start.right.theta);
   const Eigen::Quaterniond r(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));

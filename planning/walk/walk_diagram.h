@@ -59,7 +59,7 @@ struct WalkSetup {
 /// The robot of a floating-base `robot` standing at `start`: joints at their neutral values, the base above the
 /// stance's midpoint with its mean heading, the lowest of `sole_bodies` on the higher foot's height (no sole bodies:
 /// the base at z = 0). Where the walk diagram puts the plant before settling, and a picture of the robot at its start.
-/// Throws std::invalid_argument for a sole body `robot` does not have.
+/// Throws std::invalid_argument for a robot without a floating base or a sole body `robot` does not have.
 Eigen::VectorXd StandingAtStart(const multibody::Model& robot, const std::vector<std::string>& sole_bodies,
                                 const Stance& start);
 

@@ -170,6 +170,9 @@ def test_the_viewer_page_inlines_three_js_and_refuses_a_bad_scene(robot, tmp_pat
     assert q[0] == pytest.approx(0.5) and q[1] == pytest.approx(0.0) and q[2] > 0.5
     with pytest.raises(ValueError, match="unknown body 'left_foot_sole'"):
         planning.StandingAtStart(robot, ["left_foot_sole"], stance)
+    fixed = mb.ParseUrdfFile(HUMANOID)  # no floating base: nothing to place over the feet
+    with pytest.raises(ValueError, match="has no floating base; load the URDF with a floating base"):
+        planning.StandingAtStart(fixed, ["l_sole", "r_sole"], stance)
     scene.times, scene.q = [0.0, 0.5], [q, q]
     cell = viz.SceneBox()
     cell.name, cell.size, cell.occupancy = "occupied", np.array([0.05, 0.05, 0.05]), 0.7
