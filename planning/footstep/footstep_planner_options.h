@@ -17,6 +17,12 @@ struct FootstepPlannerOptions {
   /// Largest distance of the ground under the sole from the foothold's plane, m: larger gaps or bumps (a stair
   /// edge under the heel) leave the foot unsupported.
   double support_tolerance{0.02};
+  /// Largest height difference between two footholds that is priced as a level step (dz = 0), m. The cost model
+  /// knows heights only at its grid's knots (5 cm apart by default) and interpolates, so on perceived ground,
+  /// whose heights carry a few millimetres of stereo noise, a 3 mm bump would be priced partly as a 5 cm step
+  /// (and refused on low friction). Set it to the terrain's height noise; 0 (the default) prices every height as
+  /// measured. The plan's footholds keep their measured heights either way.
+  double level_step_tolerance{0.0};
   /// Smallest probability eta_geom that a stance's body box is free of the terrain's occupied voxels
   /// (TerrainMap::BoxFreeProbability; stereo uncertainty as a chance constraint on collision). In (0, 1]; 1 allows
   /// no voxel evidence at all in the box. Box obstacles are certain and always block.

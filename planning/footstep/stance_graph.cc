@@ -61,6 +61,9 @@ StanceGraph::StanceGraph(const TerrainMap& terrain, const StepCostModel& cost_mo
   if (!(options.support_tolerance >= 0.0)) {
     fail("support_tolerance must be >= 0 m, got " + cairn::FormatShort(options.support_tolerance));
   }
+  if (!(options.level_step_tolerance >= 0.0 && options.level_step_tolerance <= 1.0)) {
+    fail("level_step_tolerance must be in [0, 1] m, got " + cairn::FormatShort(options.level_step_tolerance));
+  }
   if (!(options.min_body_free_probability > 0.0 && options.min_body_free_probability <= 1.0)) {
     fail("min_body_free_probability must be in (0, 1], got " + cairn::FormatShort(options.min_body_free_probability));
   }
@@ -303,7 +306,7 @@ bool StanceGraph::EvaluateStep(const LatticeFoot& older, const LatticeFoot& newe
   }
   const Foothold& fn = EvaluateFoothold(newer);
   const Foothold& fo = EvaluateFoothold(older);
-  d.dz = ft.z - fn.z;
+  d.dz = StepHeight(fn.z, ft.z);
   if (d.dz < reach.dz_min || d.dz > reach.dz_max) return false;
   const Eigen::Vector3d sole(0.5 * geometry_.foot_length, 0.5 * geometry_.foot_width, 1.0);
   if (delta.squaredNorm() < sole.head<2>().squaredNorm() * 4.0 &&
@@ -522,7 +525,7 @@ double StanceGraph::RelaxedStepCost(const LatticeFoot& from, int moving, int cla
   if (!ft.supported) return kInf;
   const Foothold& fn = EvaluateFoothold(from);
   const StepReach& reach = cost_model_.reach();
-  const double dz = ft.z - fn.z;
+  const double dz = StepHeight(fn.z, ft.z);
   if (dz < reach.dz_min - kTolerance || dz > reach.dz_max + kTolerance) return kInf;
   if (HasBodyChecks()) {
     // As the search checks it, from the same absolute positions.
@@ -681,7 +684,7 @@ void StanceGraph::ComputeFootholdChainDistances() {
       const std::size_t j = f * 2 + (1 - moving);
       if (dist[j] <= value || !supported[f]) continue;
       double cost;
-      const double dz = height[t] - height[f];
+      const double dz = StepHeight(height[f], height[t]);
       if (dz == 0.0 && !has_obstacles) {
         // The common case, inlined: a level step whose cost is memoised for this friction.
         const double mu = std::min(friction[f], friction[t]);

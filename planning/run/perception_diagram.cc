@@ -32,13 +32,14 @@ PerceptionSetup PerceptionSetupFromScenario(const FootstepScenario& scenario,
   // pixel's mass on labels it doubts, and averaged that made half of the mock-up's tiles not walkable at
   // eta = 0.95. A single frame's mismatches on a surface without texture stand centimetres off it: those cells
   // lose their ground, the rest take their neighbourhood's median height (the noise left is otherwise near the
-  // planner's 2 cm flatness tolerance), and gaps up to 10 cm between level ground are bridged
+  // planner's 2 cm flatness tolerance), and gaps up to 20 cm between level ground are bridged: the mock-up's tile
+  // faces have no texture across most of their 30 cm, and one frame leaves holes that wide in them
   // (docs/main_diagram.md).
   setup.terrain.fusion = MaterialFusion::kIndependent;
   setup.terrain.outlier_height = 0.02;
   setup.terrain.outlier_radius = 0.075;
   setup.terrain.median_heights = true;
-  setup.terrain.max_gap = 0.1;
+  setup.terrain.max_gap = 0.2;
   const double resolution = std::max(scenario.resolution(), 0.025);
   double lowest = 0.0, highest = 0.0;
   if (!scenario.regions().empty()) {

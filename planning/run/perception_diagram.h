@@ -43,7 +43,7 @@ struct PerceptionSetup {
 /// above its highest (obstacles the body could meet); the scenario's material registry and eta; the matcher's
 /// disparity range covering depths from 0.5 m to `max_depth`; and a terrain assembly for a single frame of a
 /// calibrated segmenter (docs/main_diagram.md): MaterialFusion::kIndependent, outliers beyond 2 cm of the median
-/// within 7.5 cm dropped and the rest set to it (median_heights), gaps up to 10 cm bridged. Throws std::invalid_argument for a null segmenter or
+/// within 7.5 cm dropped and the rest set to it (median_heights), gaps up to 20 cm bridged. Throws std::invalid_argument for a null segmenter or
 /// a grid above OccupancyGrid's cell limit.
 PerceptionSetup PerceptionSetupFromScenario(const FootstepScenario& scenario,
                                             const perception::StereoCalibration& calibration,

@@ -335,7 +335,7 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
   // Planner settings.
   if (const YAML::Node p = root["planner"]) {
     yaml.CheckKeys(p, {"time_limit", "initial_epsilon", "epsilon_step", "final_epsilon", "max_expansions", "lattice", "orientations",
-                       "max_slope_deg", "support_tolerance"},
+                       "max_slope_deg", "support_tolerance", "level_step_tolerance"},
                    "planner");
     FootstepPlannerOptions& o = s.planner_;
     o.search.time_limit = yaml.Number(p, "time_limit", "planner", 5.0);
@@ -356,6 +356,7 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
     o.orientations = static_cast<int>(integer("orientations", o.orientations, 1, 32));
     o.max_slope = yaml.Number(p, "max_slope_deg", "planner", o.max_slope / kDeg) * kDeg;
     o.support_tolerance = yaml.Number(p, "support_tolerance", "planner", o.support_tolerance);
+    o.level_step_tolerance = yaml.Number(p, "level_step_tolerance", "planner", o.level_step_tolerance);
     auto check = [&](bool ok, const char* key, const std::string& rule) {
       if (!ok) throw yaml.Error(p[key], std::string("planner '") + key + "' " + rule + ".");
     };
@@ -373,6 +374,8 @@ FootstepScenario FootstepScenario::Load(const std::string& path) {
           "must be in (0, 90), got " + Format(o.max_slope / kDeg));
     check(o.support_tolerance >= 0.0 && o.support_tolerance <= 1.0, "support_tolerance",
           "must be in [0, 1] m, got " + Format(o.support_tolerance));
+    check(o.level_step_tolerance >= 0.0 && o.level_step_tolerance <= 1.0, "level_step_tolerance",
+          "must be in [0, 1] m, got " + Format(o.level_step_tolerance));
   } else {
     s.planner_.search.time_limit = 5.0;
   }

@@ -350,6 +350,8 @@ void DefinePlanning(py::module_ m) {
       .def_readwrite("orientations", &FootstepPlannerOptions::orientations, "Footstep directions (<= 32).")
       .def_readwrite("max_slope", &FootstepPlannerOptions::max_slope, "rad.")
       .def_readwrite("support_tolerance", &FootstepPlannerOptions::support_tolerance, "m.")
+      .def_readwrite("level_step_tolerance", &FootstepPlannerOptions::level_step_tolerance,
+                     "Largest foothold height difference priced as a level step, m (perceived heights' noise).")
       .def_readwrite("min_body_free_probability", &FootstepPlannerOptions::min_body_free_probability,
                      "eta_geom: least probability that a stance's body box is free of occupied voxels.")
       .def_readwrite("search", &FootstepPlannerOptions::search, "AraStarOptions.");

@@ -115,6 +115,28 @@ def test_footstep_replanner_matches_plan_footsteps(walking_model, oracle):
         planning.FootstepReplanner(terrain, scenario.goal(), None, geometry, options)
 
 
+def test_level_step_tolerance_prices_millimetre_bumps_as_level_steps(walking_model, oracle):
+    # The mock-up's wood and tiles with every cell's height off by up to 4 mm, as stereo leaves them. The oracle
+    # knows heights every 5 cm, so priced as measured a step on wood (Q = 0.103, which a level step needs nearly
+    # all of) is mostly refused; within level_step_tolerance the steps are level and the footholds keep their heights.
+    scenario = planning.FootstepScenario.Load(source_path("examples", "scenarios", "mockup", "mockup.yaml"))
+    terrain = scenario.BuildTerrain()
+    for row in range(terrain.rows()):
+        for col in range(terrain.cols()):
+            terrain.SetCell(col, row, 0.001 * ((7 * col + 3 * row) % 5), np.array([0.0, 0.0, 1.0]),
+                            terrain.friction(col, row))
+    geometry = planning.BipedGeometry.FromWalkingModel(walking_model)
+    options = budgeted(scenario.planner())
+    assert options.level_step_tolerance == pytest.approx(0.01)  # mockup.yaml sets it
+    level = planning.PlanFootsteps(terrain, scenario.start(), scenario.goal(), oracle, geometry, options)
+    assert level.found, level.reason
+    assert all(step.displacement.dz == 0.0 for step in level.steps)
+    assert any(step.pose.z != 0.0 for step in level.steps)
+    options.level_step_tolerance = 0.0
+    measured = planning.PlanFootsteps(terrain, scenario.start(), scenario.goal(), oracle, geometry, options)
+    assert not measured.found or measured.cost > level.cost
+
+
 def test_min_cost_over_heights(oracle):
     d = planning.StepDisplacement(dx=0.25, dy=0.2)
     costs = []

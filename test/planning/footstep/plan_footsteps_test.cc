@@ -183,6 +183,40 @@ TEST(PlanFootstepsTest, ShortensStepsOnLowFrictionOrWalksAround) {
   EXPECT_GT(plan.min_friction_margin, -1e-12);
 }
 
+// Perceived ground: level, but every cell's height off by up to 4 mm (a fixed pattern). Priced as measured, each
+// step climbs a few millimetres; within level_step_tolerance the steps are level ones and the plan costs what it
+// costs on flat ground, while its footholds keep the measured heights.
+TEST(PlanFootstepsTest, PricesHeightsWithinTheLevelStepToleranceAsLevelSteps) {
+  const TerrainMap flat = FlatGround(-0.5, -1.0, 2.5, 1.0, 1.0);
+  TerrainMap bumpy = flat;
+  for (int r = 0; r < bumpy.rows(); ++r) {
+    for (int c = 0; c < bumpy.cols(); ++c) {
+      bumpy.SetCell(c, r, 0.001 * ((7 * c + 3 * r) % 5), Eigen::Vector3d::UnitZ(), 1.0);
+    }
+  }
+  const TestStepCostModel model;
+  const StanceGoal goal = GoalAt(1.5);
+  const FootstepPlan on_flat = PlanFootsteps(flat, StanceAt(0.0), goal, model, BipedGeometry{}, Options());
+  const FootstepPlan as_measured = PlanFootsteps(bumpy, StanceAt(0.0), goal, model, BipedGeometry{}, Options());
+  FootstepPlannerOptions tolerant = Options();
+  tolerant.level_step_tolerance = 0.005;
+  const FootstepPlan level = PlanFootsteps(bumpy, StanceAt(0.0), goal, model, BipedGeometry{}, tolerant);
+  ExpectConsistentPlan(on_flat, goal, model);
+  ExpectConsistentPlan(as_measured, goal, model);
+  ExpectConsistentPlan(level, goal, model);
+  EXPECT_GT(as_measured.cost, on_flat.cost + 1e-6);
+  EXPECT_NEAR(level.cost, on_flat.cost, 1e-9);
+  bool measured_height = false;
+  for (const PlannedStep& step : level.steps) {
+    EXPECT_EQ(step.displacement.dz, 0.0);
+    measured_height = measured_height || step.pose.z != 0.0;
+  }
+  EXPECT_TRUE(measured_height) << "the footholds keep the terrain's heights";
+  tolerant.level_step_tolerance = -0.01;
+  CAIRN_EXPECT_THROWS_WITH(PlanFootsteps(bumpy, StanceAt(0.0), goal, model, BipedGeometry{}, tolerant),
+                           std::invalid_argument, "level_step_tolerance must be in [0, 1] m, got -0.01");
+}
+
 TEST(PlanFootstepsTest, ClimbsStepsWithinReachAndPutsFeetOnTreads) {
   TerrainMap ground = FlatGround(-0.5, -1.0, 3.0, 1.0, 1.0);
   Paint(&ground, 1.0, -1.0, 1.4, 1.0, 0.1, 1.0);

@@ -112,6 +112,13 @@ TEST(FootstepScenarioTest, ErrorsNameTheFileLineAndKey) {
   CAIRN_EXPECT_THROWS_WITH(FootstepScenario::Load(Scratch("lattice.yaml", text + "planner: {lattice: 1e-12}\n")),
                            std::invalid_argument, "line 9", "planner 'lattice' must be in [0.01, 0.5] m");
   CAIRN_EXPECT_THROWS_WITH(
+      FootstepScenario::Load(Scratch("level.yaml", text + "planner: {level_step_tolerance: -0.01}\n")),
+      std::invalid_argument, "line 9", "planner 'level_step_tolerance' must be in [0, 1] m, got -0.01");
+  EXPECT_EQ(FootstepScenario::Load(Scratch("level_ok.yaml", text + "planner: {level_step_tolerance: 0.01}\n"))
+                .planner()
+                .level_step_tolerance,
+            0.01);
+  CAIRN_EXPECT_THROWS_WITH(
       FootstepScenario::Load(Scratch("inf.yaml", std::string(text).replace(text.find("max: [2, 1]"), 11, "max: [.inf, 1]"))),
       std::invalid_argument, "line 4", "'max' must be a finite number, got '.inf'");
   CAIRN_EXPECT_THROWS_WITH(
