@@ -30,35 +30,11 @@ cv::Vec3b OccupancyColour(double p) {
                    static_cast<uchar>(std::lround(255 - 95 * s)));
 }
 
-std::string Metres(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1f", std::abs(value) < 1e-9 ? 0.0 : value);
-  return text;
-}
-
 // Pastes `panel` at `at` on `canvas`, framed, with `title` above it.
 void Paste(cv::Mat& canvas, const cv::Mat& panel, cv::Point at, const std::string& title) {
   panel.copyTo(canvas(cv::Rect(at, panel.size())));
   cv::rectangle(canvas, cv::Rect(at.x - 1, at.y - 1, panel.cols + 2, panel.rows + 2), cv::Scalar(0, 0, 0), 1);
   DrawText(canvas, title, {at.x, at.y - 8}, 0.45);
-}
-
-// Metric ticks every 0.5 m along a panel's bottom (u from u0) and left (v from v0, upwards) edges.
-void MetricTicks(cv::Mat& canvas, cv::Rect panel, double u0, double v0, double metres_per_pixel,
-                 const std::string& u_label, const std::string& v_label) {
-  const double u1 = u0 + panel.width * metres_per_pixel, v1 = v0 + panel.height * metres_per_pixel;
-  for (double u = std::ceil(u0 / 0.5) * 0.5; u <= u1 + 1e-9; u += 0.5) {
-    const int x = panel.x + static_cast<int>(std::lround((u - u0) / metres_per_pixel));
-    cv::line(canvas, {x, panel.y + panel.height}, {x, panel.y + panel.height + 4}, cv::Scalar(0, 0, 0), 1);
-    DrawText(canvas, Metres(u), {x - 10, panel.y + panel.height + 17}, 0.36);
-  }
-  for (double v = std::ceil(v0 / 0.5) * 0.5; v <= v1 + 1e-9; v += 0.5) {
-    const int y = panel.y + panel.height - static_cast<int>(std::lround((v - v0) / metres_per_pixel));
-    cv::line(canvas, {panel.x - 4, y}, {panel.x, y}, cv::Scalar(0, 0, 0), 1);
-    DrawText(canvas, Metres(v), {panel.x - 34, y + 4}, 0.36);
-  }
-  DrawText(canvas, u_label + " right, " + v_label + " up", {panel.x + panel.width / 2 - 50, panel.y + panel.height + 32},
-           0.4);
 }
 
 }  // namespace

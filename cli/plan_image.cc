@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "cairn/common/number_text.h"
@@ -17,11 +16,26 @@ namespace {
 using planning::FootPose;
 
 constexpr double kMaxPixels = 64e6;
+constexpr double kMinLongSide = 600.0;  // pixels: a small terrain still shows its soles and labels
+
+double Scale(const planning::TerrainMap& terrain, double pixels_per_metre) {
+  const Eigen::Vector2d extent = terrain.max_corner() - terrain.min_corner();
+  const double longer = std::max(extent.x(), extent.y());
+  return longer > 0.0 ? std::max(pixels_per_metre, kMinLongSide / longer) : pixels_per_metre;
+}
+
+// The key's sole outline, drawn on a dark swatch so that the white start shows.
+void KeySole(cv::Mat& canvas, cv::Point at, const cv::Scalar& colour, const std::string& label) {
+  cv::rectangle(canvas, cv::Rect(at.x, at.y - 12, 26, 16), cv::Scalar(60, 60, 60), cv::FILLED);
+  cv::rectangle(canvas, cv::Rect(at.x + 4, at.y - 9, 18, 10), colour, 2, cv::LINE_AA);
+  DrawText(canvas, label, {at.x + 32, at.y}, 0.4);
+}
 
 }  // namespace
 
 std::pair<int, int> PlanImageSize(const planning::TerrainMap& terrain, double pixels_per_metre) {
   const Eigen::Vector2d lo = terrain.min_corner(), hi = terrain.max_corner();
+  pixels_per_metre = Scale(terrain, pixels_per_metre);
   const double width = std::max(1.0, std::round((hi.x() - lo.x()) * pixels_per_metre));
   const double height = std::max(1.0, std::round((hi.y() - lo.y()) * pixels_per_metre));
   if (!(width * height <= kMaxPixels)) {
@@ -35,8 +49,9 @@ std::pair<int, int> PlanImageSize(const planning::TerrainMap& terrain, double pi
 
 std::string PlanImagePng(const planning::TerrainMap& terrain, const planning::FootstepPlan& plan,
                          const planning::StanceGoal& goal, const planning::BipedGeometry& geometry,
-                         double pixels_per_metre) {
+                         const std::string& title, double pixels_per_metre) {
   const auto [width, height] = PlanImageSize(terrain, pixels_per_metre);
+  pixels_per_metre = Scale(terrain, pixels_per_metre);
   const Eigen::Vector2d lo = terrain.min_corner(), hi = terrain.max_corner();
   // Image rows grow downwards while y grows up: row 0 is the largest y.
   auto to_pixel = [&](double x, double y) {
@@ -87,9 +102,28 @@ std::string PlanImagePng(const planning::TerrainMap& terrain, const planning::Fo
   for (const planning::PlannedStep& step : plan.steps) {
     sole(step.pose, step.side == planning::FootSide::kLeft ? cv::Scalar(255, 80, 0) : cv::Scalar(40, 0, 200));
   }
-  std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw std::runtime_error("Cannot encode the plan image as PNG.");
-  return std::string(bytes.begin(), bytes.end());
+  // The map framed on a white canvas: the title above, metric axes left and below, the legend under them.
+  constexpr int kLeft = 48, kTop = 30, kRight = 16, kBelow = 110;
+  cv::Mat canvas(height + kTop + kBelow, std::max(width + kLeft + kRight, 700), CV_8UC3, cv::Scalar(255, 255, 255));
+  const cv::Rect map(kLeft, kTop, width, height);
+  image.copyTo(canvas(map));
+  cv::rectangle(canvas, cv::Rect(map.x - 1, map.y - 1, map.width + 2, map.height + 2), cv::Scalar(0, 0, 0), 1);
+  DrawText(canvas, title, {kLeft, kTop - 10}, 0.5);
+  const double extent = std::max(hi.x() - lo.x(), hi.y() - lo.y());
+  MetricTicks(canvas, map, lo.x(), lo.y(), 1.0 / pixels_per_metre, "x (m)", "y (m)",
+              extent > 20.0 ? 5.0 : extent > 5.0 ? 1.0 : 0.5);
+  const int legend = map.y + map.height + 62;
+  DrawColourBar(canvas, cv::Rect(kLeft, legend, 200, 12), [](double t) { return FrictionColour(t); }, "0", "1",
+                "friction (darker: lower ground; black: none)");
+  int x = kLeft + 230;
+  for (const auto& [colour, label] : {std::pair{cv::Scalar(255, 255, 255), "start"},
+                                      std::pair{cv::Scalar(0, 255, 255), "goal"},
+                                      std::pair{cv::Scalar(255, 80, 0), "left foot"},
+                                      std::pair{cv::Scalar(40, 0, 200), "right foot"}}) {
+    KeySole(canvas, {x, legend + 10}, colour, label);
+    x += 32 + 8 * static_cast<int>(std::string(label).size()) + 16;
+  }
+  return EncodePng(canvas, "the plan image");
 }
 
 }  // namespace cairn::cli

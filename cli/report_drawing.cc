@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
@@ -47,6 +48,28 @@ void DrawColourBar(cv::Mat& image, cv::Rect area, const std::function<cv::Vec3b(
   DrawText(image, lo, {area.x - 4, area.y + area.height + 14}, 0.38);
   DrawText(image, hi, {area.x + area.width - 14, area.y + area.height + 14}, 0.38);
   DrawText(image, title, {area.x, area.y - 6}, 0.4);
+}
+
+void MetricTicks(cv::Mat& canvas, cv::Rect panel, double u0, double v0, double metres_per_pixel,
+                 const std::string& u_label, const std::string& v_label, double step) {
+  auto metres = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.1f", std::abs(value) < 1e-9 ? 0.0 : value);
+    return std::string(text);
+  };
+  const double u1 = u0 + panel.width * metres_per_pixel, v1 = v0 + panel.height * metres_per_pixel;
+  for (double u = std::ceil(u0 / step) * step; u <= u1 + 1e-9; u += step) {
+    const int x = panel.x + static_cast<int>(std::lround((u - u0) / metres_per_pixel));
+    cv::line(canvas, {x, panel.y + panel.height}, {x, panel.y + panel.height + 4}, cv::Scalar(0, 0, 0), 1);
+    DrawText(canvas, metres(u), {x - 10, panel.y + panel.height + 17}, 0.36);
+  }
+  for (double v = std::ceil(v0 / step) * step; v <= v1 + 1e-9; v += step) {
+    const int y = panel.y + panel.height - static_cast<int>(std::lround((v - v0) / metres_per_pixel));
+    cv::line(canvas, {panel.x - 4, y}, {panel.x, y}, cv::Scalar(0, 0, 0), 1);
+    DrawText(canvas, metres(v), {panel.x - 34, y + 4}, 0.36);
+  }
+  DrawText(canvas, u_label + " right, " + v_label + " up", {panel.x + panel.width / 2 - 50, panel.y + panel.height + 32},
+           0.4);
 }
 
 }  // namespace cairn::cli

@@ -326,7 +326,8 @@ int Run(const WalkArguments& args) {
     out->WriteFile(args.perceive ? "run.json" : "walk.json", json + "\n");
     if (args.perceive) out->WriteFile("timing.json", timing.text() + "\n");
     if (perceived != nullptr) {
-      out->WriteFile("terrain.png", PlanImagePng(*perceived, record.plan, scenario.goal(), setup.geometry));
+      out->WriteFile("terrain.png", PlanImagePng(*perceived, record.plan, scenario.goal(), setup.geometry,
+                                                      "the perceived terrain and the plan, from above"));
       out->WriteFile("perception.png", PerceptionReportPng(main, perception->registry, perception->eta));
     }
     if (record.start.ready) {
