@@ -54,6 +54,13 @@ MainDiagram Build(const FootstepScenario& scenario) {
   return BuildMainDiagram(WalkFor(scenario), perception, ScenarioCamera(scenario, camera, perception.period));
 }
 
+// The whole main diagram run on a scenario: perceived, planned and walked, with `settle_time` after the reference.
+MainRecord RunWhole(const FootstepScenario& scenario, double settle_time) {
+  WalkRunOptions options;
+  options.settle_time = settle_time;
+  return RunMainDiagram(Build(scenario), options);
+}
+
 // The terrain the planner would read after the first frame (perception only: no planning).
 TerrainMap Perceive(const MainDiagram& main) {
   const systems::Diagram& diagram = *main.walk.diagram;
@@ -194,10 +201,7 @@ TEST(MainDiagramTest, PerceivesTheClothAsNotWalkableAndTheObstacleAsRaisedGround
 // asserted: the plan uses all of the wood's friction quantile (docs/main_diagram.md).
 TEST(MainDiagramTest, RunsThePerceptionThePlannerAndThePlantAsOneDiagram) {
   const FootstepScenario scenario = Mockup("mockup.yaml");
-  const MainDiagram main = Build(scenario);
-  WalkRunOptions options;
-  options.settle_time = 0.5;
-  const MainRecord record = RunMainDiagram(main, options);
+  const MainRecord record = RunWhole(scenario, 0.5);
   ASSERT_NE(record.terrain, nullptr);
   EXPECT_EQ(record.terrain->cols(), 96);
   EXPECT_EQ(record.terrain->rows(), 72);
@@ -219,14 +223,12 @@ TEST(MainDiagramTest, RunsThePerceptionThePlannerAndThePlantAsOneDiagram) {
 
 // Thesis 5.2.3's second situation through the whole diagram: a cloth (not walkable) on the tiles across the right
 // foot's way. No sole of the plan made on the perceived terrain stands on the cloth (the plan leaves the tiles for
-// the wood around it, as the thesis' robot did; a corner may reach one terrain cell over its perceived edge). Measured 2026-12-05: that plan is walked until a fall at about 7 s
-// (the ground truth's plan, with shorter steps, is not; docs/main_diagram.md), so the fall is printed, not asserted.
+// the wood around it, as the thesis' robot did; a corner may reach one terrain cell over its perceived edge).
+// Measured 2026-12-05: that plan is walked until a fall at about 7 s (the ground truth's plan, with shorter steps,
+// is not; docs/main_diagram.md), so the fall is printed, not asserted.
 TEST(MainDiagramTest, NoFootOfThePlanLandsOnTheCloth) {
   const FootstepScenario scenario = Mockup("mockup_cloth.yaml");
-  const MainDiagram main = Build(scenario);
-  WalkRunOptions options;
-  options.settle_time = 0.2;
-  const MainRecord record = RunMainDiagram(main, options);
+  const MainRecord record = RunWhole(scenario, 0.2);
   ASSERT_TRUE(record.walk.start.ready) << record.walk.start.reason;
   const FootstepScenario::Region* cloth = nullptr;
   for (const auto& region : scenario.regions()) {
