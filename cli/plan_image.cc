@@ -17,6 +17,8 @@ using planning::FootPose;
 
 constexpr double kMaxPixels = 64e6;
 constexpr double kMinLongSide = 600.0;  // pixels: a small terrain still shows its soles and labels
+// The canvas around the map: the title above, metric axes left and below, the legend under them.
+constexpr int kLeft = 48, kTop = 30, kRight = 16, kBelow = 110, kMinCanvasWidth = 700;
 
 double Scale(const planning::TerrainMap& terrain, double pixels_per_metre) {
   const Eigen::Vector2d extent = terrain.max_corner() - terrain.min_corner();
@@ -38,11 +40,12 @@ std::pair<int, int> PlanImageSize(const planning::TerrainMap& terrain, double pi
   pixels_per_metre = Scale(terrain, pixels_per_metre);
   const double width = std::max(1.0, std::round((hi.x() - lo.x()) * pixels_per_metre));
   const double height = std::max(1.0, std::round((hi.y() - lo.y()) * pixels_per_metre));
-  if (!(width * height <= kMaxPixels)) {
+  const double canvas = std::max(width + kLeft + kRight, static_cast<double>(kMinCanvasWidth)) * (height + kTop + kBelow);
+  if (!(canvas <= kMaxPixels)) {
     throw std::invalid_argument("The plan image of the " + FormatShort(hi.x() - lo.x()) + " m x " +
                                 FormatShort(hi.y() - lo.y()) + " m terrain would be " + FormatShort(width) + " x " +
-                                FormatShort(height) + " pixels, more than the limit of " + FormatShort(kMaxPixels) +
-                                "; plan without --out or on a smaller terrain.");
+                                FormatShort(height) + " pixels with its axes and legend, more than the limit of " +
+                                FormatShort(kMaxPixels) + "; plan without --out or on a smaller terrain.");
   }
   return {static_cast<int>(width), static_cast<int>(height)};
 }
@@ -102,9 +105,9 @@ std::string PlanImagePng(const planning::TerrainMap& terrain, const planning::Fo
   for (const planning::PlannedStep& step : plan.steps) {
     sole(step.pose, step.side == planning::FootSide::kLeft ? cv::Scalar(255, 80, 0) : cv::Scalar(40, 0, 200));
   }
-  // The map framed on a white canvas: the title above, metric axes left and below, the legend under them.
-  constexpr int kLeft = 48, kTop = 30, kRight = 16, kBelow = 110;
-  cv::Mat canvas(height + kTop + kBelow, std::max(width + kLeft + kRight, 700), CV_8UC3, cv::Scalar(255, 255, 255));
+  // The map framed on a white canvas.
+  cv::Mat canvas(height + kTop + kBelow, std::max(width + kLeft + kRight, kMinCanvasWidth), CV_8UC3,
+                 cv::Scalar(255, 255, 255));
   const cv::Rect map(kLeft, kTop, width, height);
   image.copyTo(canvas(map));
   cv::rectangle(canvas, cv::Rect(map.x - 1, map.y - 1, map.width + 2, map.height + 2), cv::Scalar(0, 0, 0), 1);

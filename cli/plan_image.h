@@ -11,8 +11,8 @@
 namespace cairn::cli {
 
 /// The size in pixels of the map panel of `terrain`'s plan image (width, height): `pixels_per_metre`, raised so
-/// that the longer side has at least 600 pixels. Throws std::invalid_argument if it exceeds 64 million pixels, so
-/// that a command can check before planning.
+/// that the longer side has at least 600 pixels. Throws std::invalid_argument if the whole picture (with its axes
+/// and legend) would exceed 64 million pixels, so that a command can check before planning.
 std::pair<int, int> PlanImageSize(const planning::TerrainMap& terrain, double pixels_per_metre = 100.0);
 
 /// A top-down PNG of a plan, encoded in memory (to be written atomically): `title` above a map of the terrain

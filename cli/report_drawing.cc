@@ -58,12 +58,21 @@ void MetricTicks(cv::Mat& canvas, cv::Rect panel, double u0, double v0, double m
     return std::string(text);
   };
   const double u1 = u0 + panel.width * metres_per_pixel, v1 = v0 + panel.height * metres_per_pixel;
-  for (double u = std::ceil(u0 / step) * step; u <= u1 + 1e-9; u += step) {
+  if (!(step > 0.0) || !std::isfinite(step) || !std::isfinite(u0) || !std::isfinite(v0) ||
+      !(metres_per_pixel > 0.0) || !std::isfinite(metres_per_pixel)) {
+    throw std::invalid_argument("MetricTicks: the tick step (" + metres(step) + " m), the origin and the scale must be "
+                                "finite and the step and scale positive");
+  }
+  // Counted by index, so that a step too small to change a large coordinate cannot loop forever.
+  const double first_u = std::ceil(u0 / step), first_v = std::ceil(v0 / step);
+  for (double k = first_u; k * step <= u1 + 1e-9 && k < first_u + 1000.0; ++k) {
+    const double u = k * step;
     const int x = panel.x + static_cast<int>(std::lround((u - u0) / metres_per_pixel));
     cv::line(canvas, {x, panel.y + panel.height}, {x, panel.y + panel.height + 4}, cv::Scalar(0, 0, 0), 1);
     DrawText(canvas, metres(u), {x - 10, panel.y + panel.height + 17}, 0.36);
   }
-  for (double v = std::ceil(v0 / step) * step; v <= v1 + 1e-9; v += step) {
+  for (double k = first_v; k * step <= v1 + 1e-9 && k < first_v + 1000.0; ++k) {
+    const double v = k * step;
     const int y = panel.y + panel.height - static_cast<int>(std::lround((v - v0) / metres_per_pixel));
     cv::line(canvas, {panel.x - 4, y}, {panel.x, y}, cv::Scalar(0, 0, 0), 1);
     DrawText(canvas, metres(v), {panel.x - 34, y + 4}, 0.36);

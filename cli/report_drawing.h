@@ -26,7 +26,8 @@ void DrawColourBar(cv::Mat& image, cv::Rect area, const std::function<cv::Vec3b(
                    const std::string& lo, const std::string& hi, const std::string& title);
 
 /// Metric ticks every `step` m along a panel's bottom (u from u0 at its left edge) and left (v from v0 at its
-/// bottom edge, upwards) edges, labelled in metres, with "<u_label> right, <v_label> up" under the panel.
+/// bottom edge, upwards) edges, labelled in metres, with "<u_label> right, <v_label> up" under the panel; at most
+/// 1000 ticks per edge. Throws std::invalid_argument for a step or scale that is not positive and finite.
 void MetricTicks(cv::Mat& canvas, cv::Rect panel, double u0, double v0, double metres_per_pixel,
                  const std::string& u_label, const std::string& v_label, double step = 0.5);
 

@@ -164,14 +164,14 @@ class StanceGraph {
   // The body box at `center` with `yaw` hits a box obstacle, or is free of the occupied voxels with less than
   // options_.min_body_free_probability.
   bool BodyBlocked(const Eigen::Vector3d& center, double yaw) const;
-  // Box obstacles or occupied voxels exist (else the body needs no check).
-  /// The height of a step from a foothold at `from_z` onto one at `to_z` as the cost model sees it: zero within
-  /// options.level_step_tolerance. The search, the relaxed step costs and the heuristic's chains all use it, so
-  /// the heuristic stays a lower bound of what the search prices.
+  // The height of a step from a foothold at `from_z` onto one at `to_z` as the cost model sees it: zero within
+  // options.level_step_tolerance. The search, the relaxed step costs and the heuristic's chains all use it, so
+  // the heuristic stays a lower bound of what the search prices.
   double StepHeight(double from_z, double to_z) const {
     const double dz = to_z - from_z;
     return std::abs(dz) <= options_.level_step_tolerance ? 0.0 : dz;
   }
+  // Box obstacles or occupied voxels exist (else the body needs no check).
   bool HasBodyChecks() const { return !terrain_.obstacles().empty() || !terrain_.occupied_voxels().empty(); }
   bool EvaluateStep(const LatticeFoot& older, const LatticeFoot& newer, FootSide newer_side, const LatticeFoot& target,
                     PlannedStep* step, bool count_rejections);
