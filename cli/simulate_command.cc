@@ -254,7 +254,8 @@ int Run(const SimulateArguments& args) {
   for (const StancePhase& stance : stances) {
     json.BeginObject().Key("foot").String(stance.foot == 0 ? "left" : "right");
     json.Key("start").Number(stance.start, JsonWriter::Fixed(3)).Key("end").Number(stance.end, JsonWriter::Fixed(3));
-    json.Key("rcof").Number(stance.rcof, f6).Key("finished").Bool(stance.finished).EndObject();
+    json.Key("rcof").Number(stance.rcof, f6).Key("rcof_after_touchdown").Number(stance.rcof_after_touchdown, f6);
+    json.Key("net_rcof").Number(stance.net_rcof, f6).Key("finished").Bool(stance.finished).EndObject();
   }
   json.EndArray().EndObject();
 

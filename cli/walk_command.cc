@@ -110,7 +110,8 @@ std::vector<WalkStepComparison> CompareSteps(const WalkRecord& record) {
     c.predicted_com_work = step.transition.com_work;
     c.predicted_heat = step.transition.heat;
     c.completed = !record.samples.empty() && c.end <= record.duration + 1e-9;
-    c.measured_rcof = c.measured_com_energy = c.measured_electrical_energy = nan;
+    c.measured_rcof = c.measured_rcof_after_touchdown = c.measured_net_rcof = nan;
+    c.measured_com_energy = c.measured_electrical_energy = nan;
     if (!c.completed) {
       steps.push_back(c);
       continue;
@@ -120,6 +121,8 @@ std::vector<WalkStepComparison> CompareSteps(const WalkRecord& record) {
     for (const multibody::StancePhase& stance : record.stances) {
       if (stance.foot == support && stance.start <= swing_middle && swing_middle <= stance.end) {
         c.measured_rcof = stance.rcof;
+        c.measured_rcof_after_touchdown = stance.rcof_after_touchdown;
+        c.measured_net_rcof = stance.net_rcof;
       }
     }
     const WalkSample& a = SampleAt(record, c.start);
@@ -247,6 +250,8 @@ std::string WalkJson(const FootstepScenario& scenario, const std::string& object
     json.Key("start").Number(s.start, f3).Key("end").Number(s.end, f3).Key("completed").Bool(s.completed);
     json.Key("mu_allowed").Number(s.mu_allowed, f6).Key("predicted_rcof").Number(s.predicted_rcof, f6);
     MaybeNumber(json, "measured_rcof", s.measured_rcof, f6);
+    MaybeNumber(json, "measured_rcof_after_touchdown", s.measured_rcof_after_touchdown, f6);
+    MaybeNumber(json, "measured_net_rcof", s.measured_net_rcof, f6);
     json.Key("predicted_com_J").Number(s.predicted_com_work, f6).Key("predicted_heat_J").Number(s.predicted_heat, f6);
     MaybeNumber(json, "measured_com_J", s.measured_com_energy, f6);
     MaybeNumber(json, "measured_electrical_J", s.measured_electrical_energy, f6);

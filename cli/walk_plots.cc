@@ -229,20 +229,22 @@ std::string WalkStepsPng(const std::vector<WalkStepComparison>& steps) {
       return entries;
     }());
   };
-  Series rcof_p{"predicted RCOF", kBlue, {}}, rcof_m{"measured RCOF", kRed, {}}, mu{"mu allowed", kGrey, {}};
+  Series rcof_p{"predicted RCOF", kBlue, {}}, rcof_m{"measured RCOF (support sole)", kRed, {}},
+      rcof_net{"measured RCOF (net force)", kGreen, {}}, mu{"mu allowed", kGrey, {}};
   Series e_p{"predicted E_COM + heat", kBlue, {}}, e_m{"measured E_ele", kRed, {}},
       ecom_p{"predicted E_COM", kOrange, {}}, ecom_m{"measured E_COM", kGreen, {}};
   for (const WalkStepComparison& s : steps) {
     rcof_p.values.push_back(s.predicted_rcof);
     rcof_m.values.push_back(s.measured_rcof);
+    rcof_net.values.push_back(s.measured_net_rcof);
     mu.values.push_back(s.mu_allowed);
     e_p.values.push_back(s.predicted_com_work + s.predicted_heat);
     e_m.values.push_back(s.measured_electrical_energy);
     ecom_p.values.push_back(s.predicted_com_work);
     ecom_m.values.push_back(s.measured_com_energy);
   }
-  panel_plot(0, "RCOF per step: planner's prediction, plant's measurement (support foot), allowed friction", "RCOF",
-             {rcof_p, rcof_m, mu});
+  panel_plot(0, "RCOF per step: planner's prediction, plant's measurements, allowed friction", "RCOF",
+             {rcof_p, rcof_net, rcof_m, mu});
   panel_plot(1, "Energy per step (missing bars: the step was not completed)", "J", {ecom_p, ecom_m, e_p, e_m});
   return Png(image);
 }

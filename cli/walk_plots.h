@@ -15,6 +15,8 @@ struct WalkStepComparison {
   std::string foot;               ///< the foot that swings
   double start{0.0}, end{0.0};    ///< planned window, s
   double predicted_rcof{0.0}, measured_rcof{0.0};
+  /// The support stance's RCOF without its landing impact, and of both soles' low-passed net force (StancePhase).
+  double measured_rcof_after_touchdown{0.0}, measured_net_rcof{0.0};
   double mu_allowed{0.0};
   double predicted_com_work{0.0}, predicted_heat{0.0};
   double measured_com_energy{0.0}, measured_electrical_energy{0.0};

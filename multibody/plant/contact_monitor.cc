@@ -21,16 +21,26 @@ void CheckPositive(double value, const char* name) {
   }
 }
 
+void CheckNonNegative(double value, const char* name) {
+  if (!(std::isfinite(value) && value >= 0.0)) {
+    throw std::invalid_argument("ContactMonitor: option " + std::string(name) + " is " + FormatShort(value) +
+                                "; it must be finite and >= 0");
+  }
+}
+
 }  // namespace
 
 ContactMonitor::ContactMonitor(const BulletPlant& plant, const std::vector<std::string>& sole_bodies,
                                const std::string& base_body, std::vector<JointDrive> drives,
                                const ContactMonitorOptions& options)
     : options_(options), drives_(std::move(drives)), model_(plant.model()), data_(model_),
-      zmp_(Eigen::Vector3d::Constant(kNaN)), fall_time_(kNaN) {
+      net_force_(Eigen::Vector3d::Zero()), zmp_(Eigen::Vector3d::Constant(kNaN)), fall_time_(kNaN) {
   CheckPositive(options.loaded_force, "loaded_force");
   CheckPositive(options.slip_speed, "slip_speed");
   CheckPositive(options.slip_distance, "slip_distance");
+  CheckNonNegative(options.stance_gap, "stance_gap");
+  CheckNonNegative(options.touchdown_time, "touchdown_time");
+  CheckNonNegative(options.force_filter_time, "force_filter_time");
   CheckPositive(options.fall_base_height, "fall_base_height");
   CheckPositive(options.fall_tilt, "fall_tilt");
   CheckPositive(options.fall_contact_force, "fall_contact_force");
@@ -99,6 +109,17 @@ void ContactMonitor::Update(const BulletPlant& plant, const Eigen::Ref<const Eig
     weighted_points[uf] += contact.normal_force * contact.position;
     normal_total[uf] += contact.normal_force;
   }
+  // The soles' net force, low-passed (first order, exact for a constant input over the step), and its ratio.
+  const Eigen::Vector3d feet_force = soles_[0].force + soles_[1].force;
+  const double blend = options_.force_filter_time > 0.0 ? 1.0 - std::exp(-dt / options_.force_filter_time) : 1.0;
+  net_force_ += blend * (feet_force - net_force_);
+  const Eigen::Vector3d feet_normal_sum = normal_sum[0] + normal_sum[1];
+  const Eigen::Vector3d feet_normal =
+      feet_normal_sum.norm() > 0.0 ? Eigen::Vector3d(feet_normal_sum.normalized()) : Eigen::Vector3d::UnitZ();
+  const double net_normal = net_force_.dot(feet_normal);
+  net_force_ratio_ = net_normal > options_.loaded_force
+                         ? (net_force_ - net_normal * feet_normal).norm() / net_normal
+                         : 0.0;
   double zmp_weight = 0.0;
   Eigen::Vector3d zmp_sum = Eigen::Vector3d::Zero();
   double lowest_sole = std::numeric_limits<double>::infinity();
@@ -112,7 +133,6 @@ void ContactMonitor::Update(const BulletPlant& plant, const Eigen::Ref<const Eig
     sole.normal_force = sole.force.dot(normal);
     sole.tangential_force = (sole.force - sole.normal_force * normal).norm();
     sole.cop = normal_total[uf] > 0.0 ? Eigen::Vector3d(weighted_points[uf] / normal_total[uf]) : position;
-    const bool was_loaded = sole.loaded;
     sole.loaded = sole.normal_force > options_.loaded_force;
     Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
     if (has_previous_[uf]) velocity = (position - sole.position) / dt;
@@ -133,17 +153,28 @@ void ContactMonitor::Update(const BulletPlant& plant, const Eigen::Ref<const Eig
       slide_reported_[uf] = false;
     }
 
-    // Stances and their RCOF (eq. 2.2).
-    if (sole.loaded && !was_loaded) {
-      open_stance_[uf] = static_cast<int>(stances_.size());
-      stances_.push_back(StancePhase{f, time, time, ratio, false});
-    } else if (sole.loaded) {
+    // Stances and their RCOF (eq. 2.2); an unloaded spell up to stance_gap long does not end a stance.
+    if (sole.loaded) {
+      if (open_stance_[uf] < 0) {
+        open_stance_[uf] = static_cast<int>(stances_.size());
+        StancePhase stance;
+        stance.foot = f;
+        stance.start = time;
+        stances_.push_back(stance);
+      }
       StancePhase& stance = stances_[static_cast<std::size_t>(open_stance_[uf])];
       stance.end = time;
       stance.rcof = std::max(stance.rcof, ratio);
-    } else if (was_loaded) {
-      stances_[static_cast<std::size_t>(open_stance_[uf])].finished = true;
-      open_stance_[uf] = -1;
+      if (time - stance.start >= options_.touchdown_time) {
+        stance.rcof_after_touchdown = std::max(stance.rcof_after_touchdown, ratio);
+      }
+      stance.net_rcof = std::max(stance.net_rcof, net_force_ratio_);
+    } else if (open_stance_[uf] >= 0) {
+      StancePhase& stance = stances_[static_cast<std::size_t>(open_stance_[uf])];
+      if (time - stance.end > options_.stance_gap) {
+        stance.finished = true;
+        open_stance_[uf] = -1;
+      }
     }
     if (normal_total[uf] > 0.0) {
       zmp_sum += weighted_points[uf];

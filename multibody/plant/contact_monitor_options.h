@@ -12,6 +12,14 @@ struct ContactMonitorOptions {
   /// A slip event is reported once a loaded sole has slid this far (m) in one continuous slide, so that the
   /// micro-motion of a settling contact is not a slip.
   double slip_distance = 0.002;
+  /// A stance goes on through unloaded spells shorter than this (s), so that a sole chattering for a few
+  /// milliseconds as it lands (measured: up to 60 ms of 1-3 ms contacts) makes one stance, not dozens. >= 0.
+  double stance_gap = 0.03;
+  /// StancePhase::rcof_after_touchdown leaves out the first this of a stance (s): the impact of landing. >= 0.
+  double touchdown_time = 0.05;
+  /// Time constant of the first-order low-pass on the soles' net force behind StancePhase::net_rcof (s; a 16 Hz
+  /// cut-off at 0.01, as gait laboratories low-pass force plates; 0: unfiltered). >= 0.
+  double force_filter_time = 0.01;
   /// Fallen when the base origin is less than this (m) above the lower sole frame (the humanoid stands at 0.86 m).
   double fall_base_height = 0.5;
   /// Fallen when the base's z axis tilts more than this (rad, 40 deg) from the world's.

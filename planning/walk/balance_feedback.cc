@@ -67,11 +67,13 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
     return Ankle{joint.idx_q, static_cast<double>(joint.axis_sign)};
   };
   CheckRange("foothold_gain", options_.foothold_gain, 0.0, 1.0);
+  CheckRange("swing_orientation_gain", options_.swing_orientation_gain, 0.0, 1.0);
+  CheckRange("swing_position_gain", options_.swing_position_gain, 0.0, 1.0);
   const std::string* soles[2] = {&options_.left_sole, &options_.right_sole};
-  for (int side = 0; side < 2 && options_.foothold_gain > 0.0; ++side) {
+  for (int side = 0; side < 2 && uses_legs(); ++side) {
     if (!model_->HasFrame(*soles[side])) {
       throw std::invalid_argument("BalanceFeedback: model '" + model_->name() + "' has no frame '" + *soles[side] +
-                                  "'; name the sole frames in BalanceFeedbackOptions, or set foothold_gain 0");
+                                  "'; name the sole frames in BalanceFeedbackOptions, or set foothold_gain and the swing gains 0");
     }
     sole_frame_[side] = model_->GetFrameIndex(*soles[side]);
     int joints = 0;
@@ -89,7 +91,7 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
     if (joints != 6) {
       throw std::invalid_argument("BalanceFeedback: the sole frame '" + *soles[side] +
                                   "' is not on a leg of six one-axis joints below the floating base; name the sole "
-                                  "frames of six-joint legs, or set foothold_gain 0");
+                                  "frames of six-joint legs, or set foothold_gain and the swing gains 0");
     }
   }
   pitch_[0] = ankle(options_.left_ankle_pitch, 1);
@@ -116,8 +118,8 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
         const Eigen::VectorXd& reference = get_reference_input_port().Eval<Eigen::VectorXd>(context);
         const Eigen::VectorXd& state = get_state_input_port().Eval<Eigen::VectorXd>(context);
         *y = reference;
-        Apply(reference, state, soles[0].loaded, soles[1].loaded, &scratch.measured, &scratch.reference,
-              &scratch.jacobian, y);
+        Apply(reference, state, soles[0].loaded ? 1.0 : 0.0, soles[1].loaded ? 1.0 : 0.0, &scratch.measured,
+              &scratch.reference, &scratch.jacobian, y);
       },
       {input_port_ticket(0), input_port_ticket(1), input_port_ticket(2)});
 }
@@ -133,14 +135,14 @@ Eigen::VectorXd BalanceFeedback::Correct(const Eigen::VectorXd& reference, const
   multibody::Data measured(*model_), planned(*model_);
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(6, model_->nv());
   Eigen::VectorXd y = reference;
-  Apply(reference, state, left_loaded, right_loaded, &measured, &planned, &jacobian, &y);
+  Apply(reference, state, left_loaded ? 1.0 : 0.0, right_loaded ? 1.0 : 0.0, &measured, &planned, &jacobian, &y);
   return y;
 }
 
-void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, bool left_loaded,
-                            bool right_loaded, multibody::Data* measured, multibody::Data* planned,
+void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, double left_share,
+                            double right_share, multibody::Data* measured, multibody::Data* planned,
                             Eigen::MatrixXd* jacobian, Eigen::VectorXd* y) const {
-  if (!left_loaded && !right_loaded) return;  // in the air: nothing to stand on
+  if (left_share <= 0.0 && right_share <= 0.0) return;  // in the air: nothing to stand on
   const int nq = model_->nq();
   const double omega = std::sqrt(-model_->gravity().z() / options_.com_height);
   const auto capture_point = [&](const Eigen::VectorXd& x, multibody::Data* data) {
@@ -160,16 +162,32 @@ void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::Vecto
   // -s theta; tilting it by rho about y moves the COM forward by h rho, about x sideways by -h rho.
   const double tilt_y = std::clamp(-options_.pitch_gain * e_forward, -options_.max_pitch, options_.max_pitch);
   const double tilt_x = std::clamp(options_.roll_gain * e_left, -options_.max_roll, options_.max_roll);
-  const bool loaded[2] = {left_loaded, right_loaded};
-  // The capture points ran the kinematics of both configurations, so the soles' poses are in the Data already.
-  for (int leg = 0; leg < 2 && options_.foothold_gain > 0.0; ++leg) {
-    if (!loaded[leg]) continue;
-    const multibody::Pose X_measured = multibody::FramePose(*model_, *measured, sole_frame_[leg]);
-    const multibody::Pose X_planned = multibody::FramePose(*model_, *planned, sole_frame_[leg]);
-    // [rotation; translation] of the sole in world axes with the base held: horizontal only (the sole's height and
-    // tilt are the ground's; re-posing the yaw too measured more slips, docs/walk.md).
+  const double share[2] = {left_share, right_share};
+  const bool loaded[2] = {left_share > 0.0, right_share > 0.0};
+  // The capture points ran the kinematics of both configurations, so the soles' and the base's poses are in the
+  // Data already.
+  const multibody::Pose& base_measured = measured->X_world[1];
+  const multibody::Pose& base_planned = planned->X_world[1];
+  for (int leg = 0; leg < 2 && uses_legs(); ++leg) {
+    // [rotation; translation] of the sole in world axes with the base held.
     Eigen::Matrix<double, 6, 1> move = Eigen::Matrix<double, 6, 1>::Zero();
-    move.segment<2>(3) = options_.foothold_gain * (X_measured.translation() - X_planned.translation()).head<2>();
+    const multibody::Pose X_planned = multibody::FramePose(*model_, *planned, sole_frame_[leg]);
+    if (loaded[leg]) {
+      // Horizontal only (the sole's height and tilt are the ground's; re-posing the yaw too measured more slips,
+      // docs/walk.md).
+      const multibody::Pose X_measured = multibody::FramePose(*model_, *measured, sole_frame_[leg]);
+      move.segment<2>(3) =
+          share[leg] * options_.foothold_gain * (X_measured.translation() - X_planned.translation()).head<2>();
+    } else if (loaded[1 - leg]) {
+      // The sole the reference's leg angles give on the measured base: T X_planned with T = X_base_measured
+      // X_base_planned^-1. Moving the planned sole by T^-1 cancels the base's error.
+      const multibody::Pose T = base_measured * base_planned.Inverse();
+      const Eigen::AngleAxisd rotation_error(T.rotation());
+      move.head<3>() = -options_.swing_orientation_gain * rotation_error.angle() * rotation_error.axis();
+      const Eigen::Vector3d target = T.Inverse() * X_planned.translation();
+      move.tail<3>() = options_.swing_position_gain * (target - X_planned.translation());
+    }
+    if (move.isZero(0.0)) continue;
     multibody::FrameJacobian(*model_, *planned, sole_frame_[leg], multibody::ReferenceFrame::kWorldAligned, *jacobian);
     Eigen::Matrix<double, 6, 6> leg_jacobian;
     for (int c = 0; c < 6; ++c) leg_jacobian.col(c) = jacobian->col(leg_v_[leg][c]);
@@ -183,8 +201,8 @@ void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::Vecto
   }
   for (int leg = 0; leg < 2; ++leg) {
     if (!loaded[leg]) continue;
-    (*y)[pitch_[leg].q] -= tilt_y / pitch_[leg].sign;
-    (*y)[roll_[leg].q] -= tilt_x / roll_[leg].sign;
+    (*y)[pitch_[leg].q] -= share[leg] * tilt_y / pitch_[leg].sign;
+    (*y)[roll_[leg].q] -= share[leg] * tilt_x / roll_[leg].sign;
   }
 }
 

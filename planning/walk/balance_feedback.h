@@ -32,6 +32,13 @@ struct BalanceFeedbackOptions {
   /// plan gains 0.3-1 walk to the end (fewest slips at 0.3-0.5) and 0.2 or less fall (docs/walk.md); 0 turns it
   /// off.
   double foothold_gain{0.5};
+  /// How much of the swing sole's pose error that the base's own error causes is taken out of the swing leg's
+  /// reference while the other foot stands, in [0, 1]: the rotation and the translation of the sole in the world
+  /// that the measured base would give the reference's leg angles, against the reference's sole. The reference
+  /// poses the swing sole relative to the planned base, so a base that leans 3 degrees (the tilt feedback leans it)
+  /// lands the sole on its edge, early, and it slaps down and shears (docs/walk.md, "Touchdown"). 0 turns it off.
+  double swing_orientation_gain{0.0};
+  double swing_position_gain{0.0};
   /// The sole frames of the left and the right leg (each on a chain of six joints below the floating base); needed
   /// only with a foothold_gain above 0.
   std::string left_sole{"l_sole"};
@@ -58,7 +65,10 @@ struct BalanceFeedbackOptions {
 ///
 /// Each loaded leg also takes foothold_gain times its sole's horizontal placement error (the plant's sole against
 /// the reference's) into its six joint references, by one damped step of the leg's inverse kinematics with the base
-/// held, so that two feet that did not land where planned do not fight each other in double support. The feedback
+/// held, so that two feet that did not land where planned do not fight each other in double support. While one leg
+/// stands, the other (swinging) leg's reference takes out swing_orientation_gain of its sole's rotation error and
+/// swing_position_gain of its translation error that the measured base's deviation from the planned base causes,
+/// by the same inverse-kinematics step, so that the sole lands level and where planned in the world. The feedback
 /// is a cheap calculation on the current inputs (no allocation), so it is an output.
 ///
 /// | port | type | meaning |
@@ -94,12 +104,17 @@ class BalanceFeedback final : public systems::LeafSystem {
   };
 
   // Adds the offsets to *y (a copy of `reference`); `measured` and `planned` are kinematics scratch.
-  void Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, bool left_loaded, bool right_loaded,
+  void Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, double left_share, double right_share,
              multibody::Data* measured, multibody::Data* planned, Eigen::MatrixXd* jacobian, Eigen::VectorXd* y) const;
 
   std::shared_ptr<const multibody::Model> model_;
   BalanceFeedbackOptions options_;
   Ankle pitch_[2], roll_[2];
+  // Whether a term re-poses the legs (and so needs the sole frames and the legs' joints).
+  bool uses_legs() const {
+    return options_.foothold_gain > 0.0 || options_.swing_orientation_gain > 0.0 || options_.swing_position_gain > 0.0;
+  }
+
   int sole_frame_[2]{-1, -1};
   int leg_v_[2][6]{};  // each leg's velocity indices, from the sole up
   int leg_q_[2][6]{};

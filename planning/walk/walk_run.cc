@@ -50,6 +50,8 @@ WalkRecord RunWalk(const WalkDiagram& walk, const WalkRunOptions& options) {
     s.zmp = plant.GetOutputPort("zmp").Eval<Eigen::VectorXd>(context);
     s.left_force = soles[0].normal_force;
     s.right_force = soles[1].normal_force;
+    s.left_tangential = soles[0].tangential_force;
+    s.right_tangential = soles[1].tangential_force;
     s.com_energy = energy[0];
     s.electrical_energy = energy[1];
     record.samples.push_back(std::move(s));

@@ -34,6 +34,7 @@ struct WalkSample {
   Eigen::Vector3d com{Eigen::Vector3d::Zero()};  ///< centre of mass of q, world
   Eigen::Vector3d zmp{Eigen::Vector3d::Zero()};  ///< measured from the foot contacts (NaN in the air)
   double left_force{0.0}, right_force{0.0};  ///< soles' normal forces, N
+  double left_tangential{0.0}, right_tangential{0.0};  ///< magnitudes of the soles' tangential forces, N
   double com_energy{0.0};                   ///< E_COM so far, J
   double electrical_energy{0.0};            ///< E_ele so far, J
 };

@@ -117,7 +117,11 @@ void DefineMultibodyPlant(py::module_ m) {
       .def_readonly("foot", &StancePhase::foot, "0 left, 1 right.")
       .def_readonly("start", &StancePhase::start, "First loaded time (s).")
       .def_readonly("end", &StancePhase::end, "Last loaded time (s).")
-      .def_readonly("rcof", &StancePhase::rcof, "max |F_t / F_n| while loaded.")
+      .def_readonly("rcof", &StancePhase::rcof, "max |F_t / F_n| of this sole while loaded.")
+      .def_readonly("rcof_after_touchdown", &StancePhase::rcof_after_touchdown,
+                    "The same after the stance's first touchdown_time.")
+      .def_readonly("net_rcof", &StancePhase::net_rcof,
+                    "max |F_t / F_n| of both soles' low-passed net force over the stance.")
       .def_readonly("finished", &StancePhase::finished, "False while still loaded.");
 
   py::class_<ContactMonitorOptions>(m, "ContactMonitorOptions", "Load, slip and fall thresholds.")
@@ -125,6 +129,12 @@ void DefineMultibodyPlant(py::module_ m) {
       .def_readwrite("loaded_force", &ContactMonitorOptions::loaded_force, "Loaded above this normal force (N).")
       .def_readwrite("slip_speed", &ContactMonitorOptions::slip_speed, "Sliding above this speed (m/s).")
       .def_readwrite("slip_distance", &ContactMonitorOptions::slip_distance, "Slip reported after this slide (m).")
+      .def_readwrite("stance_gap", &ContactMonitorOptions::stance_gap,
+                     "Unloaded spells shorter than this (s) do not end a stance.")
+      .def_readwrite("touchdown_time", &ContactMonitorOptions::touchdown_time,
+                     "rcof_after_touchdown leaves out a stance's first this (s).")
+      .def_readwrite("force_filter_time", &ContactMonitorOptions::force_filter_time,
+                     "Low-pass time constant of the net force behind net_rcof (s; 0 unfiltered).")
       .def_readwrite("fall_base_height", &ContactMonitorOptions::fall_base_height, "Base height limit (m).")
       .def_readwrite("fall_tilt", &ContactMonitorOptions::fall_tilt, "Base tilt limit (rad).")
       .def_readwrite("fall_contact_force", &ContactMonitorOptions::fall_contact_force,

@@ -53,6 +53,10 @@ void DefinePlanningWalk(py::module_ m) {
                      "Pendulum height of the capture point, m, in (0.1, 3].")
       .def_readwrite("foothold_gain", &BalanceFeedbackOptions::foothold_gain,
                      "Share of a loaded foot's x-y placement error written into its leg's reference, in [0, 1].")
+      .def_readwrite("swing_orientation_gain", &BalanceFeedbackOptions::swing_orientation_gain,
+                     "Share of the swing sole's rotation error from the base's error taken out, in [0, 1].")
+      .def_readwrite("swing_position_gain", &BalanceFeedbackOptions::swing_position_gain,
+                     "Share of the swing sole's translation error from the base's error taken out, in [0, 1].")
       .def_readwrite("left_sole", &BalanceFeedbackOptions::left_sole, "Frame name.")
       .def_readwrite("right_sole", &BalanceFeedbackOptions::right_sole, "Frame name.")
       .def_readwrite("left_ankle_pitch", &BalanceFeedbackOptions::left_ankle_pitch, "Joint name.")
@@ -153,6 +157,8 @@ void DefinePlanningWalk(py::module_ m) {
       .def_readonly("zmp", &WalkSample::zmp, "Measured ZMP (NaN in the air).")
       .def_readonly("left_force", &WalkSample::left_force, "N.")
       .def_readonly("right_force", &WalkSample::right_force, "N.")
+      .def_readonly("left_tangential", &WalkSample::left_tangential, "Left sole's tangential force magnitude, N.")
+      .def_readonly("right_tangential", &WalkSample::right_tangential, "Right sole's tangential force magnitude, N.")
       .def_readonly("com_energy", &WalkSample::com_energy, "E_COM so far, J.")
       .def_readonly("electrical_energy", &WalkSample::electrical_energy, "E_ele so far, J.");
   py::class_<WalkRecord>(m, "WalkRecord", "Each stage's result, the plant's samples and verdicts.")

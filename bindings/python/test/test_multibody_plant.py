@@ -104,6 +104,19 @@ def test_humanoid_plant_stands_in_a_diagram(model):
     assert soles[0].normal_force + soles[1].normal_force == pytest.approx(model.total_mass() * 9.81, rel=0.02)
     assert plant.GetOutputPort("slips").Eval(context) == []
     assert plant.GetOutputPort("energy").Eval(context)[1] > 0.0
+    # Standing still asks almost no friction of either sole or of their net force.
+    stances = plant.GetOutputPort("stances").Eval(context)
+    assert len(stances) == 2
+    assert all(s.net_rcof < 0.05 and s.rcof_after_touchdown <= s.rcof < 0.05 for s in stances)
+
+
+def test_contact_monitor_options_refuse_a_negative_stance_gap(model):
+    options = mb.HumanoidPlantOptions()
+    assert options.monitor.stance_gap == pytest.approx(0.03)
+    options.monitor.stance_gap = -1.0
+    pd = mb.JointPdController.Load(model, CONTROL)
+    with pytest.raises(ValueError, match="stance_gap is -1"):
+        mb.HumanoidPlant(model, ground(0.8), pd, standing_q(model), options)
 
 
 def test_a_fall_ends_the_simulation(model):

@@ -73,6 +73,9 @@ def test_the_walk_diagram_settles_and_the_plant_walks_the_reference(scenario, or
     assert record.duration <= record.reference.duration() + options.settle_time + 1e-9
     energies = [s.com_energy for s in record.samples]
     assert all(b >= a - 1e-12 for a, b in zip(energies, energies[1:]))
+    # A sole's tangential force is recorded next to its normal force; an unloaded sole carries neither.
+    assert any(s.left_tangential > 0.0 for s in record.samples)
+    assert all(s.left_tangential == 0.0 for s in record.samples if s.left_force == 0.0)
 
 
 def test_the_player_interpolates_between_samples_and_holds_the_last(robot, scenario, oracle, walking_model):
@@ -130,6 +133,26 @@ def test_balance_feedback_writes_a_loaded_foots_placement_into_its_leg(robot):
     moved = after.X_world[sole].translation() - before.X_world[sole].translation()
     np.testing.assert_allclose(moved, [0.02, 0.0, 0.0], atol=5e-4)  # half of it, at the default gain
     assert np.array_equal(corrected[:7], planned[:7])  # the base keeps the plan
+
+
+def test_balance_feedback_levels_a_swing_sole_against_the_bases_tilt(robot):
+    options = planning.BalanceFeedbackOptions()
+    options.pitch_gain = options.roll_gain = options.foothold_gain = 0.0
+    assert options.swing_orientation_gain == 0.0 and options.swing_position_gain == 0.0
+    options.swing_orientation_gain = 1.0
+    feedback = planning.BalanceFeedback(robot, options)
+    planned = standing(robot)
+    measured = planned.copy()
+    measured[3:7] = [np.cos(0.025), 0.0, np.sin(0.025), 0.0]  # the base pitched 0.05 rad
+    corrected = feedback.Correct(planned, measured, True, False)
+    on_base = corrected.copy()
+    on_base[:7] = measured[:7]
+    want, got = mb.Data(robot), mb.Data(robot)
+    mb.ForwardKinematics(robot, want, planned[:robot.nq()])
+    mb.ForwardKinematics(robot, got, on_base[:robot.nq()])
+    sole = robot.GetBodyIndex("r_sole")
+    tilt = got.X_world[sole].rotation().T @ want.X_world[sole].rotation()
+    assert np.arccos(np.clip((np.trace(tilt) - 1.0) / 2.0, -1.0, 1.0)) < 3e-3  # level again, as planned
 
 
 def test_balance_feedback_refuses_bad_options_and_sizes(robot):

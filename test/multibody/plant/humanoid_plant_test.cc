@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -126,6 +127,8 @@ TEST(HumanoidPlantTest, StandsTenSecondsWithoutDriftSlipOrFall) {
   for (const StancePhase& stance : run.stances) {
     EXPECT_FALSE(stance.finished);
     EXPECT_LT(stance.rcof, 0.05);
+    EXPECT_LE(stance.rcof_after_touchdown, stance.rcof);
+    EXPECT_LT(stance.net_rcof, 0.05);
   }
   // Holding the posture costs electrical energy in the leg drives (R I^2) even without motion.
   EXPECT_GT(run.electrical_energy, 0.0);
@@ -140,6 +143,14 @@ TEST(HumanoidPlantTest, MonitorRejectsUnknownBodiesAndBadThresholds) {
   options.slip_speed = -1.0;
   CAIRN_EXPECT_THROWS_WITH(ContactMonitor(plant, {"l_sole", "r_sole"}, "pelvis", {}, options), std::invalid_argument,
                            "slip_speed is -1");
+  options = ContactMonitorOptions();
+  options.stance_gap = -0.01;
+  CAIRN_EXPECT_THROWS_WITH(ContactMonitor(plant, {"l_sole", "r_sole"}, "pelvis", {}, options), std::invalid_argument,
+                           "stance_gap is -0.01", "finite and >= 0");
+  options = ContactMonitorOptions();
+  options.force_filter_time = std::numeric_limits<double>::quiet_NaN();
+  CAIRN_EXPECT_THROWS_WITH(ContactMonitor(plant, {"l_sole", "r_sole"}, "pelvis", {}, options), std::invalid_argument,
+                           "force_filter_time is nan");
 }
 
 TEST(HumanoidPlantTest, SlipsOnA25DegreeSlopeWithMu01) {
@@ -151,6 +162,8 @@ TEST(HumanoidPlantTest, SlipsOnA25DegreeSlopeWithMu01) {
   // The stances' RCOF is the friction the slope demanded and got: mu.
   ASSERT_FALSE(run.stances.empty());
   EXPECT_NEAR(run.stances.front().rcof, 0.1, 0.01);
+  // The whole robot slides, so the net force of both soles is at the limit too.
+  EXPECT_NEAR(run.stances.front().net_rcof, 0.1, 0.015);
 }
 
 TEST(HumanoidPlantTest, LandsFromTwentyCentimetresWithoutFalling) {

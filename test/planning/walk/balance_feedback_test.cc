@@ -129,6 +129,57 @@ TEST(BalanceFeedbackTest, TheErrorIsReadInTheBasesHeadingFrame) {
   EXPECT_GT((corrected - planned).norm(), 0.0);
 }
 
+// The swing leg's reference poses its sole relative to the planned base; with the measured base pitched 3 degrees
+// and 2 cm off, the corrected leg angles put on the measured base give the sole the reference's pose in the world
+// (level, where planned), to first order. The standing leg is left alone.
+TEST(BalanceFeedbackTest, ASwingSoleIsPosedAgainstTheBasesError) {
+  const auto model = test::Humanoid();
+  BalanceFeedbackOptions options;
+  options.pitch_gain = 0.0;
+  options.roll_gain = 0.0;
+  options.foothold_gain = 0.0;
+  options.swing_orientation_gain = 1.0;
+  options.swing_position_gain = 1.0;
+  const BalanceFeedback feedback(model, options);
+  Eigen::VectorXd planned = Standing(*model);
+  planned[2] = 0.75;  // knees bent enough for the leg to move its sole every way
+  planned[model->joint(model->GetJointIndex("r_knee")).idx_q] = 0.6;
+  planned[model->joint(model->GetJointIndex("r_hip_pitch")).idx_q] = -0.3;
+  planned[model->joint(model->GetJointIndex("r_ankle_pitch")).idx_q] = -0.3;
+  Eigen::VectorXd measured = planned;
+  const Eigen::Quaterniond pitched(Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitY()));
+  measured.segment<4>(3) << pitched.w(), pitched.x(), pitched.y(), pitched.z();
+  measured[0] += 0.02;
+  const Eigen::VectorXd corrected = feedback.Correct(planned, measured, true, false);
+  Eigen::VectorXd on_measured_base = corrected;
+  on_measured_base.head(7) = measured.head(7);
+  multibody::Data want(*model), got(*model), uncorrected(*model);
+  multibody::ForwardKinematics(*model, want, planned.head(model->nq()));
+  multibody::ForwardKinematics(*model, got, on_measured_base.head(model->nq()));
+  multibody::ForwardKinematics(*model, uncorrected, measured.head(model->nq()));
+  const int sole = model->GetBodyIndex("r_sole");
+  const auto angle = [](const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
+    return Eigen::AngleAxisd(a.transpose() * b).angle();
+  };
+  EXPECT_NEAR(angle(uncorrected.X_world[sole].rotation(), want.X_world[sole].rotation()), 0.05, 1e-9);
+  EXPECT_LT(angle(got.X_world[sole].rotation(), want.X_world[sole].rotation()), 3e-3);
+  EXPECT_GT((uncorrected.X_world[sole].translation() - want.X_world[sole].translation()).norm(), 0.02);
+  EXPECT_LT((got.X_world[sole].translation() - want.X_world[sole].translation()).norm(), 3e-3);
+  // The standing (left) leg and the base keep the plan.
+  for (const char* joint : {"l_hip_yaw", "l_hip_roll", "l_hip_pitch", "l_knee", "l_ankle_pitch", "l_ankle_roll"}) {
+    const int q = model->joint(model->GetJointIndex(joint)).idx_q;
+    EXPECT_EQ(corrected[q], planned[q]) << joint;
+  }
+  EXPECT_EQ((corrected - planned).head(7).norm(), 0.0);
+  // Nothing to correct against with both feet down or none.
+  EXPECT_EQ(feedback.Correct(planned, measured, true, true), planned);
+  EXPECT_EQ(feedback.Correct(planned, measured, false, false), planned);
+
+  options.swing_orientation_gain = -0.1;
+  CAIRN_EXPECT_THROWS_WITH(BalanceFeedback(model, options), std::invalid_argument,
+                           "swing_orientation_gain -0.1 must be in [0, 1]");
+}
+
 // A loaded foot that stands 4 cm ahead and 2 cm left of where the reference puts it (here: the whole robot shifted,
 // the base held at the plan in the reference): its leg's reference moves the sole by foothold_gain times that
 // offset relative to the planned base, keeping the sole's orientation and height, so the legs agree with where
@@ -167,7 +218,7 @@ TEST(BalanceFeedbackTest, ALoadedFootsPlacementErrorIsWrittenIntoItsLeg) {
   options.foothold_gain = 0.5;
   options.left_sole = "l_foot_plate";
   CAIRN_EXPECT_THROWS_WITH(BalanceFeedback(model, options), std::invalid_argument, "no frame 'l_foot_plate'",
-                           "name the sole frames", "or set foothold_gain 0");
+                           "name the sole frames", "or set foothold_gain and the swing gains 0");
   options.left_sole = "head";  // a frame, but not at the end of a leg
   CAIRN_EXPECT_THROWS_WITH(BalanceFeedback(model, options), std::invalid_argument,
                            "'head' is not on a leg of six one-axis joints");
