@@ -118,8 +118,8 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
         const Eigen::VectorXd& reference = get_reference_input_port().Eval<Eigen::VectorXd>(context);
         const Eigen::VectorXd& state = get_state_input_port().Eval<Eigen::VectorXd>(context);
         *y = reference;
-        Apply(reference, state, soles[0].loaded ? 1.0 : 0.0, soles[1].loaded ? 1.0 : 0.0, &scratch.measured,
-              &scratch.reference, &scratch.jacobian, y);
+        Apply(reference, state, soles[0].loaded, soles[1].loaded, &scratch.measured, &scratch.reference,
+              &scratch.jacobian, y);
       },
       {input_port_ticket(0), input_port_ticket(1), input_port_ticket(2)});
 }
@@ -135,14 +135,14 @@ Eigen::VectorXd BalanceFeedback::Correct(const Eigen::VectorXd& reference, const
   multibody::Data measured(*model_), planned(*model_);
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(6, model_->nv());
   Eigen::VectorXd y = reference;
-  Apply(reference, state, left_loaded ? 1.0 : 0.0, right_loaded ? 1.0 : 0.0, &measured, &planned, &jacobian, &y);
+  Apply(reference, state, left_loaded, right_loaded, &measured, &planned, &jacobian, &y);
   return y;
 }
 
-void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, double left_share,
-                            double right_share, multibody::Data* measured, multibody::Data* planned,
+void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, bool left_loaded,
+                            bool right_loaded, multibody::Data* measured, multibody::Data* planned,
                             Eigen::MatrixXd* jacobian, Eigen::VectorXd* y) const {
-  if (left_share <= 0.0 && right_share <= 0.0) return;  // in the air: nothing to stand on
+  if (!left_loaded && !right_loaded) return;  // in the air: nothing to stand on
   const int nq = model_->nq();
   const double omega = std::sqrt(-model_->gravity().z() / options_.com_height);
   const auto capture_point = [&](const Eigen::VectorXd& x, multibody::Data* data) {
@@ -162,8 +162,7 @@ void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::Vecto
   // -s theta; tilting it by rho about y moves the COM forward by h rho, about x sideways by -h rho.
   const double tilt_y = std::clamp(-options_.pitch_gain * e_forward, -options_.max_pitch, options_.max_pitch);
   const double tilt_x = std::clamp(options_.roll_gain * e_left, -options_.max_roll, options_.max_roll);
-  const double share[2] = {left_share, right_share};
-  const bool loaded[2] = {left_share > 0.0, right_share > 0.0};
+  const bool loaded[2] = {left_loaded, right_loaded};
   // The capture points ran the kinematics of both configurations, so the soles' and the base's poses are in the
   // Data already.
   const multibody::Pose& base_measured = measured->X_world[1];
@@ -176,8 +175,7 @@ void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::Vecto
       // Horizontal only (the sole's height and tilt are the ground's; re-posing the yaw too measured more slips,
       // docs/walk.md).
       const multibody::Pose X_measured = multibody::FramePose(*model_, *measured, sole_frame_[leg]);
-      move.segment<2>(3) =
-          share[leg] * options_.foothold_gain * (X_measured.translation() - X_planned.translation()).head<2>();
+      move.segment<2>(3) = options_.foothold_gain * (X_measured.translation() - X_planned.translation()).head<2>();
     } else if (loaded[1 - leg]) {
       // The sole the reference's leg angles give on the measured base: T X_planned with T = X_base_measured
       // X_base_planned^-1. Moving the planned sole by T^-1 cancels the base's error.
@@ -201,8 +199,8 @@ void BalanceFeedback::Apply(const Eigen::VectorXd& reference, const Eigen::Vecto
   }
   for (int leg = 0; leg < 2; ++leg) {
     if (!loaded[leg]) continue;
-    (*y)[pitch_[leg].q] -= share[leg] * tilt_y / pitch_[leg].sign;
-    (*y)[roll_[leg].q] -= share[leg] * tilt_x / roll_[leg].sign;
+    (*y)[pitch_[leg].q] -= tilt_y / pitch_[leg].sign;
+    (*y)[roll_[leg].q] -= tilt_x / roll_[leg].sign;
   }
 }
 

@@ -104,7 +104,7 @@ class BalanceFeedback final : public systems::LeafSystem {
   };
 
   // Adds the offsets to *y (a copy of `reference`); `measured` and `planned` are kinematics scratch.
-  void Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, double left_share, double right_share,
+  void Apply(const Eigen::VectorXd& reference, const Eigen::VectorXd& state, bool left_loaded, bool right_loaded,
              multibody::Data* measured, multibody::Data* planned, Eigen::MatrixXd* jacobian, Eigen::VectorXd* y) const;
 
   std::shared_ptr<const multibody::Model> model_;
