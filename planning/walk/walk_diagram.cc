@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include <cairn/common/number_text.h>
 #include <cairn/multibody/configuration.h>
 #include <cairn/multibody/data.h>
 #include <cairn/multibody/kinematics.h>
@@ -81,6 +82,11 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
   }
   if (setup.robot == nullptr) throw std::invalid_argument("BuildWalkDiagram: the robot model is null");
   if (setup.controller == nullptr) throw std::invalid_argument("BuildWalkDiagram: the PD controller is null");
+  if (!(std::isfinite(setup.gravity_feedforward) && setup.gravity_feedforward >= 0.0 &&
+        setup.gravity_feedforward <= 1.0)) {
+    throw std::invalid_argument("BuildWalkDiagram: gravity_feedforward " + FormatShort(setup.gravity_feedforward) +
+                                " must be in [0, 1] (0: none)");
+  }
   WalkDiagram walk;
   auto* start = builder->AddNamedSystem<systems::ConstantValueSource<Stance>>("start", setup.start);
   auto* goal = builder->AddNamedSystem<systems::ConstantValueSource<StanceGoal>>("goal", setup.goal);
@@ -95,9 +101,19 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
   auto* trajectory = builder->AddNamedSystem<TrajectoryOptimizer>("trajectory", setup.robot, setup.trajectory);
   auto* stabilizer = builder->AddNamedSystem<Stabilizer>("stabilizer", setup.robot, setup.stabilizer);
   auto* player = builder->AddNamedSystem<StabilizedReferencePlayer>("player", setup.robot);
+  multibody::HumanoidPlantOptions plant_options = setup.plant;
+  if (setup.gravity_feedforward > 0.0) plant_options.torque_input = true;
   auto* plant = builder->AddNamedSystem<multibody::HumanoidPlant>(
       "plant", *setup.robot, setup.plant_terrain, *setup.controller,
-      StandingAtStart(*setup.robot, setup.plant.sole_bodies, setup.start), setup.plant);
+      StandingAtStart(*setup.robot, setup.plant.sole_bodies, setup.start), plant_options);
+  if (setup.gravity_feedforward > 0.0) {
+    auto* feedforward = builder->AddNamedSystem<GravityFeedforward>("feedforward", setup.robot,
+                                                                    setup.plant.sole_bodies, setup.gravity_feedforward);
+    builder->Connect(plant->GetOutputPort("state"), feedforward->get_state_input_port());
+    builder->Connect(plant->GetOutputPort("contacts"), feedforward->get_contacts_input_port());
+    builder->Connect(feedforward->get_torque_output_port(), plant->GetInputPort("torque"));
+    walk.feedforward = feedforward;
+  }
   builder->Connect(*terrain_source, footsteps->get_terrain_input_port());
   builder->Connect(start->GetOutputPort("y0"), footsteps->get_start_input_port());
   builder->Connect(goal->GetOutputPort("y0"), footsteps->get_goal_input_port());

@@ -24,6 +24,7 @@
 #include <cairn/planning/trajectory/trajectory_optimizer.h>
 #include <cairn/planning/trajectory/trajectory_optimizer_options.h>
 #include <cairn/planning/walk/balance_feedback.h>
+#include <cairn/planning/walk/gravity_feedforward.h>
 #include <cairn/systems/analysis/simulator.h>
 #include <cairn/systems/framework/diagram.h>
 #include <cairn/systems/framework/diagram_builder.h>
@@ -49,6 +50,9 @@ struct WalkSetup {
   /// the stabilised reference open loop.
   bool feedback{true};
   BalanceFeedbackOptions balance;
+  /// Share of the gravity feedforward (GravityFeedforward: the static torques of every joint that carries no loaded
+  /// sole) added to the PD drive, in [0, 1]; 0 adds none.
+  double gravity_feedforward{0.0};
   // The physics plant.
   std::shared_ptr<const multibody::Model> robot;         ///< floating base; required
   std::shared_ptr<const multibody::JointPdController> controller;  ///< PD gains; required
@@ -87,6 +91,7 @@ struct WalkDiagram {
   const Stabilizer* stabilizer{nullptr};
   const StabilizedReferencePlayer* player{nullptr};
   const BalanceFeedback* balance{nullptr};  ///< null without setup.feedback
+  const GravityFeedforward* feedforward{nullptr};  ///< null with setup.gravity_feedforward 0
   const multibody::HumanoidPlant* plant{nullptr};
 };
 

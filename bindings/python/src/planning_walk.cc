@@ -81,6 +81,23 @@ void DefinePlanningWalk(py::module_ m) {
       .def("Correct", &BalanceFeedback::Correct, py::arg("reference"), py::arg("state"), py::arg("left_loaded"),
            py::arg("right_loaded"), "The corrected reference as the output computes it.");
 
+  py::class_<GravityFeedforward, systems::LeafSystem>(
+      m, "GravityFeedforward",
+      "System: inputs `state` ([q; v]) and `contacts` (the soles); output `torque`: gain times the static gravity "
+      "torques of every joint that carries no loaded sole (0 on the stance legs and the base).")
+      .def(py::init([](const multibody::Model& model, std::vector<std::string> sole_bodies, double gain) {
+             return std::make_unique<GravityFeedforward>(std::make_shared<const multibody::Model>(model),
+                                                         std::move(sole_bodies), gain);
+           }),
+           py::arg("model"), py::arg("sole_bodies"), py::arg("gain") = 1.0,
+           "Keeps a copy of the model (floating base; the left and the right sole body or frame).")
+      .def("get_state_input_port", PortGetter(&GravityFeedforward::get_state_input_port), "Input `state`.")
+      .def("get_contacts_input_port", PortGetter(&GravityFeedforward::get_contacts_input_port), "Input `contacts`.")
+      .def("get_torque_output_port", PortGetter(&GravityFeedforward::get_torque_output_port), "Output `torque`.")
+      .def("gain", &GravityFeedforward::gain, "The gain.")
+      .def("Torques", &GravityFeedforward::Torques, py::arg("q"), py::arg("left_loaded"), py::arg("right_loaded"),
+           "The torques as the output computes them.");
+
   m.def("ScenarioTerrainBoxes", &ScenarioTerrainBoxes, py::arg("scenario"),
         "A footstep scenario's regions and obstacles as the plant's non-overlapping TerrainBoxes (true friction).");
 
@@ -96,6 +113,8 @@ void DefinePlanningWalk(py::module_ m) {
       .def_readwrite("feedback", &WalkSetup::feedback,
                      "Close the loop on the capture point (BalanceFeedback); False plays the reference open loop.")
       .def_readwrite("balance", &WalkSetup::balance, "BalanceFeedbackOptions.")
+      .def_readwrite("gravity_feedforward", &WalkSetup::gravity_feedforward,
+                     "Share of GravityFeedforward's torques added to the PD drive, in [0, 1] (0: none).")
       .def_readwrite("plant_terrain", &WalkSetup::plant_terrain, "The plant's TerrainBoxes (the true world).")
       .def_readwrite("plant", &WalkSetup::plant, "HumanoidPlantOptions.");
   m.def(
@@ -131,6 +150,9 @@ void DefinePlanningWalk(py::module_ m) {
       .def_property_readonly(
           "balance", [](const WalkDiagram& w) { return w.balance; }, py::return_value_policy::reference_internal,
           "The BalanceFeedback (None when the setup plays the reference open loop).")
+      .def_property_readonly(
+          "feedforward", [](const WalkDiagram& w) { return w.feedforward; },
+          py::return_value_policy::reference_internal, "The GravityFeedforward (None with gravity_feedforward 0).")
       .def_property_readonly(
           "plant", [](const WalkDiagram& w) { return w.plant; }, py::return_value_policy::reference_internal,
           "The HumanoidPlant.");

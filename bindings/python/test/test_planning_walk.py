@@ -155,6 +155,21 @@ def test_balance_feedback_levels_a_swing_sole_against_the_bases_tilt(robot):
     assert np.arccos(np.clip((np.trace(tilt) - 1.0) / 2.0, -1.0, 1.0)) < 3e-3  # level again, as planned
 
 
+def test_gravity_feedforward_holds_the_swing_leg_but_not_the_stance_leg(robot):
+    feedforward = planning.GravityFeedforward(robot, ["l_sole", "r_sole"])
+    q = standing(robot)[:robot.nq()]
+    knee = robot.joint(robot.GetJointIndex("r_knee")).idx_q
+    q[knee] = 0.6
+    g = np.array(mb.GravityTorques(robot, mb.Data(robot), q)).copy()
+    torque = feedforward.Torques(q, True, False)
+    r_knee = robot.joint(robot.GetJointIndex("r_knee")).idx_v
+    l_knee = robot.joint(robot.GetJointIndex("l_knee")).idx_v
+    assert torque[r_knee] == pytest.approx(g[r_knee]) and g[r_knee] != 0.0
+    assert torque[l_knee] == 0.0 and np.all(torque[:6] == 0.0)
+    with pytest.raises(ValueError, match="gain 2 must be in"):
+        planning.GravityFeedforward(robot, ["l_sole", "r_sole"], 2.0)
+
+
 def test_balance_feedback_refuses_bad_options_and_sizes(robot):
     options = planning.BalanceFeedbackOptions()
     options.max_pitch = 0.7
@@ -171,6 +186,14 @@ def test_balance_feedback_refuses_bad_options_and_sizes(robot):
 def test_the_walk_diagram_closes_the_loop_unless_told_to_play_open_loop(scenario, oracle, walking_model, robot):
     setup = setup_for(scenario, oracle, walking_model, robot)
     assert setup.feedback
+    assert setup.gravity_feedforward == 0.0 and planning.BuildWalkDiagram(setup).feedforward is None
+    setup.gravity_feedforward = 1.0
+    walk = planning.BuildWalkDiagram(setup)
+    assert walk.feedforward is not None and walk.feedforward.gain() == 1.0
+    setup.gravity_feedforward = -0.5
+    with pytest.raises(ValueError, match="gravity_feedforward -0.5 must be in"):
+        planning.BuildWalkDiagram(setup)
+    setup.gravity_feedforward = 0.0
     walk = planning.BuildWalkDiagram(setup)
     assert walk.balance is not None and walk.balance.get_name() == "balance"
     setup.feedback = False

@@ -182,6 +182,14 @@ TEST(WalkDiagramTest, RefusesAnIncompleteSetupAnEmptyDiagramAndAForeignSimulator
                            "log_period 0 s must be in (0, 1]");
   CAIRN_EXPECT_THROWS_WITH(RunWalk(WalkDiagram()), std::invalid_argument, "the walk diagram is empty",
                            "BuildWalkDiagram()");
+  WalkSetup bad_feedforward = ShortWalk();
+  bad_feedforward.gravity_feedforward = 1.5;
+  CAIRN_EXPECT_THROWS_WITH(BuildWalkDiagram(bad_feedforward), std::invalid_argument,
+                           "gravity_feedforward 1.5 must be in [0, 1]");
+  bad_feedforward.gravity_feedforward = 1.0;  // the feedforward drives the plant's torque input
+  const WalkDiagram with_feedforward = BuildWalkDiagram(bad_feedforward);
+  ASSERT_NE(with_feedforward.feedforward, nullptr);
+  EXPECT_TRUE(with_feedforward.plant->options().torque_input);
   const WalkDiagram walk = BuildWalkDiagram(ShortWalk());
   const WalkDiagram other = BuildWalkDiagram(ShortWalk());
   systems::Simulator foreign(*other.diagram);
