@@ -40,6 +40,11 @@ ContactMonitor::ContactMonitor(const BulletPlant& plant, const std::vector<std::
   CheckPositive(options.slip_distance, "slip_distance");
   CheckNonNegative(options.stance_gap, "stance_gap");
   CheckNonNegative(options.touchdown_time, "touchdown_time");
+  if (options.stance_gap > 1.0 || options.touchdown_time > 1.0) {
+    throw std::invalid_argument("ContactMonitor: stance_gap " + FormatShort(options.stance_gap) +
+                                " s and touchdown_time " + FormatShort(options.touchdown_time) +
+                                " s must be at most 1 s (longer would merge or skip whole steps)");
+  }
   CheckNonNegative(options.force_filter_time, "force_filter_time");
   CheckPositive(options.fall_base_height, "fall_base_height");
   CheckPositive(options.fall_tilt, "fall_tilt");

@@ -23,7 +23,8 @@ class ContactMonitor {
  public:
   /// Monitors `plant`'s robot: `sole_bodies` names the left and right sole bodies (or links), `base_body` the
   /// pelvis; `drives` has one entry per velocity coordinate (or is empty: no electrical energy). Throws
-  /// std::invalid_argument for unknown bodies, a wrong drive count or thresholds that are not finite and > 0.
+  /// std::invalid_argument for unknown bodies, a wrong drive count or thresholds out of range (the load, slip and fall
+  /// thresholds finite and > 0; stance_gap and touchdown_time in [0, 1] s; force_filter_time finite and >= 0).
   ContactMonitor(const BulletPlant& plant, const std::vector<std::string>& sole_bodies, const std::string& base_body,
                  std::vector<JointDrive> drives = {}, const ContactMonitorOptions& options = ContactMonitorOptions());
 
@@ -69,7 +70,7 @@ class ContactMonitor {
   std::vector<bool> has_previous_;
   std::vector<double> slide_distance_;
   std::vector<bool> slide_reported_;
-  std::vector<int> open_stance_;  // index into stances_, -1 when unloaded
+  std::vector<int> open_stance_;  // index into stances_, -1 once unloaded for longer than stance_gap
   std::vector<SlipEvent> slips_;
   std::vector<StancePhase> stances_;
   Eigen::Vector3d net_force_;  // low-passed sum of the soles' contact forces

@@ -13,9 +13,9 @@ struct ContactMonitorOptions {
   /// micro-motion of a settling contact is not a slip.
   double slip_distance = 0.002;
   /// A stance goes on through unloaded spells shorter than this (s), so that a sole chattering for a few
-  /// milliseconds as it lands (measured: up to 60 ms of 1-3 ms contacts) makes one stance, not dozens. >= 0.
+  /// milliseconds as it lands (measured: up to 60 ms of 1-3 ms contacts) makes one stance, not dozens. In [0, 1].
   double stance_gap = 0.03;
-  /// StancePhase::rcof_after_touchdown leaves out the first this of a stance (s): the impact of landing. >= 0.
+  /// StancePhase::rcof_after_touchdown leaves out the first this of a stance (s): the impact of landing. In [0, 1].
   double touchdown_time = 0.05;
   /// Time constant of the first-order low-pass on the soles' net force behind StancePhase::net_rcof (s; a 16 Hz
   /// cut-off at 0.01, as gait laboratories low-pass force plates; 0: unfiltered). >= 0.

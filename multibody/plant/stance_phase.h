@@ -22,7 +22,7 @@ struct StancePhase {
   /// max over the stance of |F_t / F_n| of the net force of both soles, low-passed with the time constant
   /// ContactMonitorOptions::force_filter_time: the quantity the planner's RCOF model predicts.
   double net_rcof = 0.0;
-  /// False while the sole is still loaded.
+  /// False while the stance goes on (loaded, or unloaded for at most ContactMonitorOptions::stance_gap).
   bool finished = false;
 };
 

@@ -104,6 +104,11 @@ std::vector<SolePath> MakeSolePaths(const multibody::Model& model, const std::ve
       const multibody::Pose& to = swing == kLeftSoleContact ? L[i + 2] : R[i + 2];
       const double lift = mid.translation().z() - 0.5 * (from.translation().z() + to.translation().z());
       path = {knots[i].time, knots[i + 2].time, L[i], R[i], L[i + 2], R[i + 2], swing, std::max(lift, 0.0)};
+      if (options.landing_time > 0.5 * (path.t1 - path.t0)) {
+        throw std::invalid_argument("StabilizeTrajectory: landing_time " + FormatShort(options.landing_time) +
+                                    " s is more than half of the swing from " + FormatShort(path.t0) + " s to " +
+                                    FormatShort(path.t1) + " s; choose a shorter landing_time");
+      }
       ++i;
     } else {
       path = {knots[i].time, knots[i + 1].time, L[i], R[i], L[i + 1], R[i + 1], 0, 0.0};
@@ -121,17 +126,27 @@ multibody::Pose Blend(const multibody::Pose& a, const multibody::Pose& b, double
 
 // Soles at time t: the swing sole's horizontal motion and turn follow the minimum-jerk profile
 // 10 u^3 - 15 u^4 + 6 u^5 (zero velocity and acceleration at lift-off and touch-down), its height the straight
-// line plus lift * 16 u^2 (1 - u)^2 (zero vertical velocity at both ends, the apex at mid-swing).
-std::pair<multibody::Pose, multibody::Pose> SolePosesAt(const std::vector<SolePath>& paths, double t) {
+// line plus lift * 16 u^2 (1 - u)^2 (zero vertical velocity at both ends, the apex at mid-swing). With a landing
+// phase (landing_height h, landing_time d) that profile runs over [t0, t1 - d] towards the touch-down pose raised by
+// h (the raise blended in by the same minimum-jerk profile), and the sole then descends h at the constant speed h / d.
+std::pair<multibody::Pose, multibody::Pose> SolePosesAt(const std::vector<SolePath>& paths, double t,
+                                                        double landing_height, double landing_time) {
   std::size_t i = 0;
   while (i + 1 < paths.size() && t > paths[i].t1) ++i;
   const SolePath& path = paths[i];
   if (path.swing == 0) return {path.left0, path.right0};
-  const double u = std::clamp((t - path.t0) / (path.t1 - path.t0), 0.0, 1.0);
+  const double duration = path.t1 - path.t0;
+  const double landing = landing_time;  // at most half the swing (MakeSolePaths)
+  const double u = std::clamp((t - path.t0) / (duration - landing), 0.0, 1.0);
   const double s = u * u * u * (10.0 - 15.0 * u + 6.0 * u * u);
   multibody::Pose moved = path.swing == kLeftSoleContact ? Blend(path.left0, path.left1, s)
                                                          : Blend(path.right0, path.right1, s);
-  const Eigen::Vector3d lifted = moved.translation() + Eigen::Vector3d(0, 0, path.lift * 16.0 * u * u * (1 - u) * (1 - u));
+  double raise = path.lift * 16.0 * u * u * (1 - u) * (1 - u);
+  if (landing > 0.0) {
+    const double descent = std::clamp((t - (path.t1 - landing)) / landing, 0.0, 1.0);
+    raise += landing_height * (s - descent);
+  }
+  const Eigen::Vector3d lifted = moved.translation() + Eigen::Vector3d(0, 0, raise);
   moved = multibody::Pose(moved.rotation(), lifted);
   if (path.swing == kLeftSoleContact) return {moved, path.right0};
   return {path.left0, moved};
@@ -197,7 +212,7 @@ StabilizedTrajectory StabilizeTrajectory(std::shared_ptr<const multibody::Model>
       // With contact timing the soles follow the plan's contacts exactly: still on the ground from touch-down to
       // lift-off, the swing sole on a smooth path (SolePosesAt) instead of wherever the interpolated postures
       // put it; the posture's COM is kept.
-      const auto [X_left, X_right] = SolePosesAt(sole_paths, t);
+      const auto [X_left, X_right] = SolePosesAt(sole_paths, t, options.landing_height, options.landing_time);
       const Eigen::Vector3d heading = X_left.rotation().col(0) + X_right.rotation().col(0);
       const Eigen::Matrix3d R_base =
           options.waist_orientation == "upright"

@@ -26,6 +26,8 @@ StabilizerOptions WalkingStabilizerOptions(const std::string& method) {
   options.waist_orientation = "upright";
   options.cart_table_start = true;
   options.crouch = 0.06;
+  options.landing_height = 0.01;
+  options.landing_time = 0.15;
   return options;
 }
 
@@ -56,6 +58,18 @@ void ValidateStabilizerOptions(const StabilizerOptions& o) {
   CheckRange("preview_q", o.preview_q, 0.0, 1e12, true, "");
   CheckRange("preview_r", o.preview_r, 0.0, 1e12, true, "");
   CheckRange("crouch", o.crouch, 0.0, 0.3, false, " m");
+  CheckRange("landing_height", o.landing_height, 0.0, 0.1, false, " m");
+  CheckRange("landing_time", o.landing_time, 0.0, 1.0, false, " s");
+  if (o.landing_height > 0.0 && !o.contact_timing) {
+    throw std::invalid_argument("StabilizerOptions: landing_height " + FormatShort(o.landing_height) +
+                                " m needs contact_timing (the landing shapes the contact-timed swing path); set "
+                                "contact_timing or landing_height 0");
+  }
+  if ((o.landing_height > 0.0) != (o.landing_time > 0.0)) {
+    throw std::invalid_argument("StabilizerOptions: landing_height " + FormatShort(o.landing_height) +
+                                " m and landing_time " + FormatShort(o.landing_time) +
+                                " s must be both 0 (no landing phase) or both > 0");
+  }
   CheckRange("fft_padding", o.fft_padding, 0.0, 10.0, false, " s");
   CheckRange("sole_length", o.sole_length, 0.0, 2.0, true, " m");
   CheckRange("sole_width", o.sole_width, 0.0, 2.0, true, " m");

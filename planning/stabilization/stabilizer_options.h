@@ -33,6 +33,14 @@ struct StabilizerOptions {
   /// With contact timing: lower the waist by this much below the interpolated postures' (m, in [0, 0.3]); bent
   /// knees keep the legs away from their stretched singularity while the COM moves between the feet.
   double crouch{0.0};
+  /// With contact timing: the swing sole's last `landing_height` (m, in [0, 0.1]) is a straight descent at the
+  /// constant speed landing_height / landing_time (landing_time in s, in [0, 1] and at most half of each swing,
+  /// which StabilizeTrajectory checks): its horizontal motion, turn and the apex path end landing_time before touch-down at that height above the
+  /// touch-down pose, at rest. A sole that runs a few millimetres below its reference touches the ground early;
+  /// on the swing's quadratic approach (the default 0, 0) it then meets it at 15-20 cm/s, on this descent at
+  /// landing_height / landing_time whatever the error below landing_height (docs/walk.md, "Touchdown and RCOF").
+  double landing_height{0.0};
+  double landing_time{0.0};
   /// Compensation passes (each: ZMP from the full model, COM offsets, leg IK), in [1, 100].
   int max_iterations{8};
   /// Fraction of each pass's COM offsets applied, in (0, 1]: the full model is far from the linear ZMP equation
@@ -67,8 +75,10 @@ struct StabilizerOptions {
 };
 
 /// The defaults with the settings a walk in the plant needs (docs/stabilization.md, "Walking it in the plant"):
-/// contact timing, an upright waist, the cart-table start and a 6 cm crouch, with `method`. The defaults stay the
-/// thesis' procedure; these are the ones measured to walk the four-step test plan without a fall (fft, preview).
+/// contact timing, an upright waist, the cart-table start, a 6 cm crouch and a landing phase of 1 cm over 0.15 s
+/// (docs/walk.md, "Touchdown and RCOF"), with `method`. The defaults stay the thesis' procedure; these are the
+/// ones measured to walk the plans in the plant with the balance feedback (the four-step test plan, open loop,
+/// walks better without the landing phase: plant_walk_test.cc).
 StabilizerOptions WalkingStabilizerOptions(const std::string& method = "fft");
 
 /// Throws std::invalid_argument naming the first option out of range and its valid range.

@@ -36,11 +36,12 @@ struct BalanceFeedbackOptions {
   /// reference while the other foot stands, in [0, 1]: the rotation and the translation of the sole in the world
   /// that the measured base would give the reference's leg angles, against the reference's sole. The reference
   /// poses the swing sole relative to the planned base, so a base that leans 3 degrees (the tilt feedback leans it)
-  /// lands the sole on its edge, early, and it slaps down and shears (docs/walk.md, "Touchdown"). 0 turns it off.
+  /// lands the sole on its edge, early, and it slaps down and shears (docs/walk.md, "Touchdown and RCOF"). 0 turns
+  /// it off.
   double swing_orientation_gain{0.0};
   double swing_position_gain{0.0};
   /// The sole frames of the left and the right leg (each on a chain of six joints below the floating base); needed
-  /// only with a foothold_gain above 0.
+  /// only with a foothold or swing gain above 0.
   std::string left_sole{"l_sole"};
   std::string right_sole{"r_sole"};
   /// The ankle joints of the left and the right leg (revolute; pitch about the joints' +-y, roll about +-x).
@@ -76,13 +77,13 @@ struct BalanceFeedbackOptions {
 /// | input `reference` | vector nq + nv | the planned [q; v] (StabilizedReferencePlayer's `reference`) |
 /// | input `state` | vector nq + nv | the plant's measured [q; v] (HumanoidPlant's `state`) |
 /// | input `contacts` | std::vector<multibody::SoleState> | the plant's left and right sole (HumanoidPlant's `contacts`): which carry load |
-/// | output `reference` | vector nq + nv | `reference` with the loaded legs' ankle offsets and foothold corrections |
+/// | output `reference` | vector nq + nv | `reference` with the loaded legs' ankle offsets and foothold corrections and the swing leg's correction |
 class BalanceFeedback final : public systems::LeafSystem {
  public:
   /// Throws std::invalid_argument for a null model, one without a floating base or without gravity along -z, an
   /// ankle joint that is missing or not revolute about its x (roll) or y (pitch) axis, options out of range
-  /// (naming the option and its range), and with a foothold_gain above 0 a sole frame that is missing or not on a
-  /// six-joint leg below the floating base.
+  /// (naming the option and its range), and with a foothold or swing gain above 0 a sole frame that is missing or
+  /// not on a six-joint leg below the floating base.
   BalanceFeedback(std::shared_ptr<const multibody::Model> model, const BalanceFeedbackOptions& options = {});
 
   const systems::InputPort& get_reference_input_port() const { return GetInputPort("reference"); }

@@ -30,7 +30,8 @@ class GravityFeedforward final : public systems::LeafSystem {
   /// `sole_bodies` names the left and the right sole body or frame, in the order of the `contacts` input. `gain`
   /// scales the torques, in [0, 1]. Throws std::invalid_argument for a null model, one without a floating base, a
   /// sole that is not a body or frame of the model, or a gain outside [0, 1].
-  GravityFeedforward(std::shared_ptr<const multibody::Model> model, std::vector<std::string> sole_bodies, double gain = 1.0);
+  GravityFeedforward(std::shared_ptr<const multibody::Model> model, std::vector<std::string> sole_bodies,
+                     double gain = 1.0);
 
   const systems::InputPort& get_state_input_port() const { return GetInputPort("state"); }
   const systems::InputPort& get_contacts_input_port() const { return GetInputPort("contacts"); }

@@ -122,7 +122,7 @@ void DefineMultibodyPlant(py::module_ m) {
                     "The same after the stance's first touchdown_time.")
       .def_readonly("net_rcof", &StancePhase::net_rcof,
                     "max |F_t / F_n| of both soles' low-passed net force over the stance.")
-      .def_readonly("finished", &StancePhase::finished, "False while still loaded.");
+      .def_readonly("finished", &StancePhase::finished, "False while the stance goes on (stance_gap).");
 
   py::class_<ContactMonitorOptions>(m, "ContactMonitorOptions", "Load, slip and fall thresholds.")
       .def(py::init<>(), "The defaults (20 N, 0.01 m/s, 2 mm, 0.5 m, 0.7 rad, 1 N).")

@@ -37,6 +37,10 @@ void DefinePlanningStabilization(py::module_ m) {
       .def_readwrite("cart_table_start", &StabilizerOptions::cart_table_start,
                      "Start from the cart-table COM of the reference ZMP.")
       .def_readwrite("crouch", &StabilizerOptions::crouch, "With contact timing: lower the waist by this (m).")
+      .def_readwrite("landing_height", &StabilizerOptions::landing_height,
+                     "With contact timing: the swing sole's last this (m) is a straight descent at constant speed.")
+      .def_readwrite("landing_time", &StabilizerOptions::landing_time,
+                     "Duration of that descent (s), at most half of each swing; both 0 or both > 0.")
       .def_readwrite("max_iterations", &StabilizerOptions::max_iterations, "Compensation passes.")
       .def_readwrite("step_fraction", &StabilizerOptions::step_fraction, "Fraction of each pass's offsets applied.")
       .def_readwrite("tolerance", &StabilizerOptions::tolerance, "RMS ZMP error to stop at, m.")

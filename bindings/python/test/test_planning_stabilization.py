@@ -105,8 +105,14 @@ def test_walking_options_are_validated(model):
         planning.Stabilizer(model, options)
 
 
-def test_the_walking_options_are_the_defaults_with_contact_timing_and_a_crouch():
+def test_the_walking_options_are_the_defaults_with_contact_timing_and_a_crouch(model):
     options = planning.WalkingStabilizerOptions("preview")
     assert options.method == "preview" and options.contact_timing and options.cart_table_start
     assert options.waist_orientation == "upright" and abs(options.crouch - 0.06) < 1e-12
     assert not planning.StabilizerOptions().contact_timing
+    # and a landing phase of 1 cm over 0.15 s, which the thesis' defaults do not have
+    assert options.landing_height == pytest.approx(0.01) and options.landing_time == pytest.approx(0.15)
+    assert planning.StabilizerOptions().landing_height == 0.0
+    options.landing_time = 0.0
+    with pytest.raises(ValueError, match="must be both 0"):
+        planning.Stabilizer(model, options)

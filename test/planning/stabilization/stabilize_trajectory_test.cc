@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 
 #include <cairn/multibody/data.h>
 #include <cairn/multibody/kinematics.h>
@@ -115,6 +116,61 @@ TEST(StabilizeTrajectoryTest, CompensationWithContactTimingAndBentKneesConverges
   EXPECT_LT(timed.report.rms_error_after, thesis.report.rms_error_after);
   EXPECT_GT(timed.report.min_support_margin_after, 0.0);
   EXPECT_EQ(timed.report.unsupported_samples_after, 0);
+}
+
+// With a landing phase the swing sole stops landing_height above its touch-down pose, landing_time before
+// touch-down, and comes down at the constant speed landing_height / landing_time; without one it is still falling
+// fast just before touch-down (the quadratic approach that lands a sole that runs low at 15 cm/s in the plant).
+TEST(StabilizeTrajectoryTest, ALandingPhaseBringsTheSwingSoleDownSlowlyAtTheEnd) {
+  StabilizerOptions options;
+  options.method = "none";
+  options.contact_timing = true;
+  options.waist_orientation = "upright";
+  options.crouch = 0.06;
+  const auto model = test::Humanoid();
+  const StabilizedTrajectory plain = StabilizeTrajectory(model, test::FlatTrajectory(), options);
+  options.landing_height = 0.01;
+  options.landing_time = 0.15;
+  const StabilizedTrajectory landing = StabilizeTrajectory(model, test::FlatTrajectory(), options);
+  ASSERT_EQ(plain.q.size(), landing.q.size());
+  const double period = landing.period;
+  multibody::Data data(*model);
+  const auto sole = [&](const StabilizedTrajectory& out, std::size_t k, int foot) {
+    multibody::ForwardKinematics(*model, data, out.q[k]);
+    return multibody::FramePose(*model, data, model->GetFrameIndex(foot == 0 ? "l_sole" : "r_sole")).translation();
+  };
+  int touchdowns = 0;
+  for (int foot = 0; foot < 2; ++foot) {
+    for (std::size_t k = 1; k < landing.q.size(); ++k) {
+      const bool down = (landing.contacts[k] >> foot) & 1, was_down = (landing.contacts[k - 1] >> foot) & 1;
+      if (!down || was_down) continue;
+      ++touchdowns;
+      const Eigen::Vector3d at_touchdown = sole(landing, k, foot);
+      const std::size_t hover = k - static_cast<std::size_t>(std::lround(options.landing_time / period));
+      const Eigen::Vector3d at_hover = sole(landing, hover, foot);
+      EXPECT_NEAR(at_hover.z() - at_touchdown.z(), 0.01, 5e-4) << "foot " << foot << " at " << k * period << " s";
+      EXPECT_LT((at_hover - at_touchdown).head<2>().norm(), 5e-4);
+      // 50 ms before touch-down: at the landing speed, against about twice that without the landing phase.
+      const std::size_t before = k - static_cast<std::size_t>(std::lround(0.05 / period));
+      const double speed = (sole(landing, before - 1, foot).z() - sole(landing, before + 1, foot).z()) / (2 * period);
+      EXPECT_NEAR(speed, 0.01 / 0.15, 5e-3);
+      const double plain_speed = (sole(plain, before - 1, foot).z() - sole(plain, before + 1, foot).z()) / (2 * period);
+      EXPECT_GT(plain_speed, 1.5 * speed);
+    }
+  }
+  EXPECT_GE(touchdowns, 2);
+
+  options.landing_time = 0.0;
+  CAIRN_EXPECT_THROWS_WITH(StabilizeTrajectory(model, test::FlatTrajectory(), options), std::invalid_argument,
+                           "landing_height 0.01 m and landing_time 0 s must be both 0");
+  options.landing_time = 0.15;
+  options.contact_timing = false;
+  CAIRN_EXPECT_THROWS_WITH(StabilizeTrajectory(model, test::FlatTrajectory(), options), std::invalid_argument,
+                           "landing_height 0.01 m needs contact_timing");
+  options.contact_timing = true;
+  options.landing_time = 0.9;
+  CAIRN_EXPECT_THROWS_WITH(StabilizeTrajectory(model, test::FlatTrajectory(), options), std::invalid_argument,
+                           "landing_time 0.9 s is more than half of the swing", "choose a shorter landing_time");
 }
 
 TEST(StabilizeTrajectoryTest, PreviewControlLowersTheZmpErrorOfAnOptimisedFlatTrajectory) {
