@@ -122,9 +122,8 @@ void ContactMonitor::Update(const BulletPlant& plant, const Eigen::Ref<const Eig
   const Eigen::Vector3d feet_normal =
       feet_normal_sum.norm() > 0.0 ? Eigen::Vector3d(feet_normal_sum.normalized()) : Eigen::Vector3d::UnitZ();
   const double net_normal = net_force_.dot(feet_normal);
-  net_force_ratio_ = net_normal > options_.loaded_force
-                         ? (net_force_ - net_normal * feet_normal).norm() / net_normal
-                         : 0.0;
+  const double net_force_ratio =
+      net_normal > options_.loaded_force ? (net_force_ - net_normal * feet_normal).norm() / net_normal : 0.0;
   double zmp_weight = 0.0;
   Eigen::Vector3d zmp_sum = Eigen::Vector3d::Zero();
   double lowest_sole = std::numeric_limits<double>::infinity();
@@ -173,7 +172,7 @@ void ContactMonitor::Update(const BulletPlant& plant, const Eigen::Ref<const Eig
       if (time - stance.start >= options_.touchdown_time) {
         stance.rcof_after_touchdown = std::max(stance.rcof_after_touchdown, ratio);
       }
-      stance.net_rcof = std::max(stance.net_rcof, net_force_ratio_);
+      stance.net_rcof = std::max(stance.net_rcof, net_force_ratio);
     } else if (open_stance_[uf] >= 0) {
       StancePhase& stance = stances_[static_cast<std::size_t>(open_stance_[uf])];
       if (time - stance.end > options_.stance_gap) {

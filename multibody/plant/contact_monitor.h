@@ -37,9 +37,6 @@ class ContactMonitor {
   const std::vector<SlipEvent>& slips() const { return slips_; }
   /// Every stance so far (the last ones may be unfinished), in start order.
   const std::vector<StancePhase>& stances() const { return stances_; }
-  /// |F_t / F_n| of both soles' net force, low-passed (options.force_filter_time), after the last update; 0 while
-  /// the net normal force is at most options.loaded_force.
-  double net_force_ratio() const { return net_force_ratio_; }
   /// The zero-moment point: the normal-force-weighted mean of all foot contact points (exact for coplanar
   /// contacts); NaN without foot contact.
   const Eigen::Vector3d& zmp() const { return zmp_; }
@@ -74,7 +71,6 @@ class ContactMonitor {
   std::vector<SlipEvent> slips_;
   std::vector<StancePhase> stances_;
   Eigen::Vector3d net_force_;  // low-passed sum of the soles' contact forces
-  double net_force_ratio_ = 0.0;
   Eigen::Vector3d zmp_;
   bool fallen_ = false;
   std::string fall_reason_;

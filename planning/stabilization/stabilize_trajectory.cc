@@ -135,15 +135,14 @@ std::pair<multibody::Pose, multibody::Pose> SolePosesAt(const std::vector<SolePa
   while (i + 1 < paths.size() && t > paths[i].t1) ++i;
   const SolePath& path = paths[i];
   if (path.swing == 0) return {path.left0, path.right0};
-  const double duration = path.t1 - path.t0;
-  const double landing = landing_time;  // at most half the swing (MakeSolePaths)
-  const double u = std::clamp((t - path.t0) / (duration - landing), 0.0, 1.0);
+  // landing_time is at most half the swing (MakeSolePaths).
+  const double u = std::clamp((t - path.t0) / (path.t1 - path.t0 - landing_time), 0.0, 1.0);
   const double s = u * u * u * (10.0 - 15.0 * u + 6.0 * u * u);
   multibody::Pose moved = path.swing == kLeftSoleContact ? Blend(path.left0, path.left1, s)
                                                          : Blend(path.right0, path.right1, s);
   double raise = path.lift * 16.0 * u * u * (1 - u) * (1 - u);
-  if (landing > 0.0) {
-    const double descent = std::clamp((t - (path.t1 - landing)) / landing, 0.0, 1.0);
+  if (landing_time > 0.0) {
+    const double descent = std::clamp((t - (path.t1 - landing_time)) / landing_time, 0.0, 1.0);
     raise += landing_height * (s - descent);
   }
   const Eigen::Vector3d lifted = moved.translation() + Eigen::Vector3d(0, 0, raise);

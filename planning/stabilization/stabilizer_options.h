@@ -35,8 +35,8 @@ struct StabilizerOptions {
   double crouch{0.0};
   /// With contact timing: the swing sole's last `landing_height` (m, in [0, 0.1]) is a straight descent at the
   /// constant speed landing_height / landing_time (landing_time in s, in [0, 1] and at most half of each swing,
-  /// which StabilizeTrajectory checks): its horizontal motion, turn and the apex path end landing_time before touch-down at that height above the
-  /// touch-down pose, at rest. A sole that runs a few millimetres below its reference touches the ground early;
+  /// which StabilizeTrajectory checks): its horizontal motion, turn and the apex path end landing_time before
+  /// touch-down at that height above the touch-down pose, at rest. A sole that runs a few millimetres below its reference touches the ground early;
   /// on the swing's quadratic approach (the default 0, 0) it then meets it at 15-20 cm/s, on this descent at
   /// landing_height / landing_time whatever the error below landing_height (docs/walk.md, "Touchdown and RCOF").
   double landing_height{0.0};

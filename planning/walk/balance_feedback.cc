@@ -73,7 +73,8 @@ BalanceFeedback::BalanceFeedback(std::shared_ptr<const multibody::Model> model, 
   for (int side = 0; side < 2 && uses_legs(); ++side) {
     if (!model_->HasFrame(*soles[side])) {
       throw std::invalid_argument("BalanceFeedback: model '" + model_->name() + "' has no frame '" + *soles[side] +
-                                  "'; name the sole frames in BalanceFeedbackOptions, or set foothold_gain and the swing gains 0");
+                                  "'; name the sole frames in BalanceFeedbackOptions, or set foothold_gain and the "
+                                  "swing gains 0");
     }
     sole_frame_[side] = model_->GetFrameIndex(*soles[side]);
     int joints = 0;
