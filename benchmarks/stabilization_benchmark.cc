@@ -7,6 +7,11 @@
 // StabilizedReferencePlayer [-> BalanceFeedback] -> HumanoidPlant, 1 ms plant steps) on that trajectory with the
 // walking options: the cost that the Stabilizer's per-step check, its dense reference and (`feedback`) the
 // capture-point feedback add to each plant step.
+//
+// BM_PlantGait: wall time of one sample of the `plant` oracle source (issue 21): a level periodic gait of six 0.1 m
+// steps and a closing step (t_ds 0.5 s, t_sw 1.2 s) planned, optimised, stabilised and walked by PlantGaitSampler,
+// with the stages' shares as counters. Its peer is the thesis' sweep: about 12,600 gaits in "around 2 days" of ODE
+// (2.3.3), 13.7 s per gait.
 
 #include <memory>
 #include <string>
@@ -22,6 +27,7 @@
 #include <cairn/planning/stabilization/stabilizer.h>
 #include <cairn/planning/trajectory/optimize_whole_body_trajectory.h>
 #include <cairn/planning/walk/balance_feedback.h>
+#include <cairn/planning/walk/plant_gait_sampler.h>
 #include <cairn/systems/analysis/simulator.h>
 #include <cairn/systems/framework/diagram_builder.h>
 #include <cairn/systems/primitives/constant_value_source.h>
@@ -141,11 +147,38 @@ void BM_PlantPlaysTheReference(benchmark::State& state, bool feedback) {
       static_cast<double>(state.iterations()) * simulated, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
+void BM_PlantGait(benchmark::State& state) {
+  const auto controller = std::make_shared<const multibody::JointPdController>(multibody::JointPdController::Load(
+      *Robot(), std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_control.yaml"));
+  const auto walking_model = std::make_shared<const WalkingModel>(
+      WalkingModel::Load(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_walking.yaml"));
+  const PlantGaitSampler sampler(walking_model, Robot(), controller, WalkingObjective::kComWorkPlusHeat);
+  PeriodicGait gait;
+  gait.displacement = {0.1, 0.2, 0.0, 0.0};
+  gait.parameters = {0.5, 1.2, 0.7};
+  GaitMeasurement m;
+  double trajectory = 0.0, stabilizer = 0.0, plant = 0.0;
+  for (auto _ : state) {
+    m = sampler.Measure(gait);
+    trajectory += m.seconds.trajectory;
+    stabilizer += m.seconds.stabilizer;
+    plant += m.plant_seconds;
+  }
+  if (!m.feasible) state.SkipWithError(("the gait was not walked: " + m.reason).c_str());
+  const double n = static_cast<double>(state.iterations());
+  state.counters["trajectory_s"] = trajectory / n;
+  state.counters["stabilizer_s"] = stabilizer / n;
+  state.counters["plant_s"] = plant / n;
+  state.counters["simulated_s"] = m.duration;
+  state.counters["com_work_J"] = m.com_work;
+}
+
 BENCHMARK_CAPTURE(BM_Stabilize, fft, std::string("fft"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Stabilize, preview, std::string("preview"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Stabilize, none, std::string("none"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PlantPlaysTheReference, open_loop, false)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(BM_PlantPlaysTheReference, feedback, true)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_PlantGait)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 

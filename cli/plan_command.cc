@@ -40,7 +40,7 @@ struct PlanArguments {
   double time_limit{0.0};
   bool json{false};
   std::string out;
-  std::string oracle_cache;
+  OracleChoice oracle;
   bool no_refine{false};
   bool whole_body{false};
 };
@@ -54,7 +54,7 @@ bool IsPlanOutput(const std::string& name) {
 // (`plan_ms`, `first_plan_ms`, `refine_ms`): the report on stdout has them, plan.json does not, so that the same
 // scenario gives the same bytes on every run and machine.
 std::string PlanJson(const FootstepScenario& scenario, const FootstepPlan& plan, WalkingObjective objective,
-                     double refine_ms, bool with_wall_times) {
+                     double refine_ms, bool with_wall_times, const std::string& oracle_source = "") {
   // Without a plan its measures do not exist, nor a first-plan time without a first plan: the writer gets NaN
   // (JSON null) instead of the zeros and the -1 placeholder the struct holds.
   const double none = std::numeric_limits<double>::quiet_NaN();
@@ -64,6 +64,7 @@ std::string PlanJson(const FootstepScenario& scenario, const FootstepPlan& plan,
   const JsonWriter::NumberFormat ms = JsonWriter::Significant(4);
   JsonWriter json;
   json.BeginObject().Key("scenario").String(scenario.name()).Key("objective").String(to_string(objective));
+  if (!oracle_source.empty()) json.Key("oracle_source").String(oracle_source);
   json.Key("found").Bool(plan.found).Key("reason").String(plan.reason).Key("steps").Integer(plan.steps.size());
   json.Key("cost").Number(measure(plan.cost)).Key("energy_J").Number(measure(plan.energy));
   json.Key("duration_s").Number(measure(plan.duration));
@@ -114,6 +115,7 @@ void PrintSummary(const FootstepScenario& scenario, const FootstepPlan& plan, Wa
 
 int Run(const PlanArguments& args) {
   CheckInputFile("--scenario", args.scenario, "a scenario YAML file");
+  if (!args.oracle.grid.empty()) CheckInputFile("--oracle-grid", args.oracle.grid, "an oracle grid YAML file");
   FootstepScenario scenario = FootstepScenario::Load(args.scenario);
   const WalkingObjective objective =
       ParseWalkingObjective(args.objective.empty() ? scenario.objective() : args.objective);
@@ -174,8 +176,7 @@ int Run(const PlanArguments& args) {
                                 : scenario.robot();
   CheckInputFile("the scenario's robot", robot, "a walking-model YAML file");
   const auto model = std::make_shared<const WalkingModel>(WalkingModel::Load(robot));
-  const TransitionOracle oracle =
-      LoadOrBuildOracle(args.oracle_cache.empty() ? DefaultOracleCache() : args.oracle_cache, *model, objective);
+  const TransitionOracle oracle = LoadChosenOracle(args.oracle, model, objective);
 
   BipedGeometry geometry;
   geometry.foot_length = model->foot_length();
@@ -184,7 +185,8 @@ int Run(const PlanArguments& args) {
   geometry.body_bottom = model->body_box_bottom();
   plan = PlanFootsteps(*terrain, scenario.start(), scenario.goal(), oracle, geometry, options);
   double refine_ms = 0.0;
-  if (!args.no_refine) {
+  // The refinement optimises the analytic model's cost: a plan priced by the plant keeps the plant's timings.
+  if (!args.no_refine && !args.oracle.plant()) {
     const auto t0 = std::chrono::steady_clock::now();
     RefineFootstepPlan(*model, objective, &plan);
     refine_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -193,13 +195,14 @@ int Run(const PlanArguments& args) {
   const int whole_body = args.whole_body ? RunWholeBody(scenario, plan, args.json, out ? &*out : nullptr) : 0;
   if (out) {
     out->WriteFile("plan.png", PlanImagePng(*terrain, plan, scenario.goal(), geometry));
-    out->WriteFile("plan.json", PlanJson(scenario, plan, objective, refine_ms, false) + "\n");
+    out->WriteFile("plan.json", PlanJson(scenario, plan, objective, refine_ms, false, oracle.source()) + "\n");
     out->Commit();
   }
   if (args.json) {
-    std::printf("%s\n", PlanJson(scenario, plan, objective, refine_ms, true).c_str());
+    std::printf("%s\n", PlanJson(scenario, plan, objective, refine_ms, true, oracle.source()).c_str());
   } else {
     PrintSummary(scenario, plan, objective);
+    std::printf("oracle     %s\n", oracle.description().c_str());
     if (out) std::printf("wrote      %s/plan.json, %s/plan.png\n", args.out.c_str(), args.out.c_str());
   }
   return whole_body;
@@ -220,8 +223,7 @@ void RegisterPlanCommand(CommandRegistry* registry) {
                       ->default_str("");
                   app.add_flag("--json", args->json, "Print the plan as one JSON object");
                   app.add_option("--out", args->out, "Folder for plan.json and plan.png (replaced as a whole)");
-                  app.add_option("--oracle-cache", args->oracle_cache,
-                                 "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
+                  AddOracleOptions(app, &args->oracle);
                   app.add_flag("--no-refine", args->no_refine, "Keep the table's step parameters (skip SLSQP)");
                   app.add_flag("--whole-body", args->whole_body,
                                "Also optimise the whole-body trajectory (trajectory.json, trajectory.png in --out)");

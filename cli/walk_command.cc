@@ -58,7 +58,7 @@ struct WalkArguments {
   std::string objective;
   std::string stabilizer = "fft";
   std::string out;
-  std::string oracle_cache;
+  OracleChoice oracle;
   double settle_time = 1.0;
   double step = 1e-3;
   bool open_loop = false;
@@ -83,69 +83,6 @@ std::string MaterialAt(const FootstepScenario& scenario, double x, double y) {
     if (region.Contains(Eigen::Vector2d(x, y))) material = region.material;
   }
   return material;
-}
-
-// The sample recorded nearest to time t (the samples are kLogPeriod apart from t = 0).
-const WalkSample& SampleAt(const WalkRecord& record, double t) {
-  const auto k = static_cast<std::size_t>(std::max(0.0, std::round(t / kLogPeriod)));
-  return record.samples[std::min(k, record.samples.size() - 1)];
-}
-
-// Each planned step against the plant over its planned window [start, end]: the support foot's measured RCOF
-// (thesis eq. 2.2, the plant's stance that holds the middle of the swing) and the energy spent in the window.
-std::vector<WalkStepComparison> CompareSteps(const WalkRecord& record) {
-  std::vector<WalkStepComparison> steps;
-  double t = 0.0;
-  const double nan = std::nan("");
-  for (std::size_t k = 0; k < record.plan.steps.size(); ++k) {
-    const PlannedStep& step = record.plan.steps[k];
-    WalkStepComparison c;
-    c.index = static_cast<int>(k) + 1;
-    c.foot = FootSideName(step.side);
-    c.start = t;
-    c.end = t + step.transition.duration;
-    t = c.end;
-    c.predicted_rcof = step.transition.rcof;
-    c.mu_allowed = step.mu_allowed;
-    c.predicted_com_work = step.transition.com_work;
-    c.predicted_heat = step.transition.heat;
-    c.completed = !record.samples.empty() && c.end <= record.duration + 1e-9;
-    c.measured_rcof = c.measured_rcof_after_touchdown = c.measured_net_rcof = nan;
-    c.measured_com_energy = c.measured_electrical_energy = nan;
-    if (!c.completed) {
-      steps.push_back(c);
-      continue;
-    }
-    const double swing_middle = c.start + step.transition.parameters.t_ds + 0.5 * step.transition.parameters.t_sw;
-    const int support = step.side == FootSide::kLeft ? 1 : 0;
-    for (const multibody::StancePhase& stance : record.stances) {
-      if (stance.foot == support && stance.start <= swing_middle && swing_middle <= stance.end) {
-        c.measured_rcof = stance.rcof;
-        c.measured_rcof_after_touchdown = stance.rcof_after_touchdown;
-        c.measured_net_rcof = stance.net_rcof;
-      }
-    }
-    const WalkSample& a = SampleAt(record, c.start);
-    const WalkSample& b = SampleAt(record, c.end);
-    c.measured_com_energy = b.com_energy - a.com_energy;
-    c.measured_electrical_energy = b.electrical_energy - a.electrical_energy;
-    steps.push_back(c);
-  }
-  return steps;
-}
-
-// Where the soles ended against a stance (the goal's, or the plan's last): the larger of the two feet's horizontal
-// distances. `soles` names the left and the right sole body (the plant's sole_bodies).
-double SoleDistance(const multibody::Model& robot, const std::vector<std::string>& soles, const WalkRecord& record,
-                    const Stance& stance) {
-  multibody::Data data(robot);
-  multibody::ForwardKinematics(robot, data, record.samples.back().q);
-  const auto sole = [&](const std::string& name) {
-    return data.X_world[static_cast<std::size_t>(robot.GetBodyIndex(name))].translation().head<2>().eval();
-  };
-  const double left = (sole(soles.at(0)) - Eigen::Vector2d(stance.left.x, stance.left.y)).norm();
-  const double right = (sole(soles.at(1)) - Eigen::Vector2d(stance.right.x, stance.right.y)).norm();
-  return std::max(left, right);
 }
 
 void MaybeNumber(JsonWriter& json, const char* key, double value, JsonWriter::NumberFormat format) {
@@ -231,6 +168,7 @@ std::string WalkJson(const FootstepScenario& scenario, const std::string& object
     const WalkSample& last = record.samples.back();
     json.Key("energy").BeginObject().Key("measured_com_J").Number(last.com_energy, f6);
     json.Key("measured_electrical_J").Number(last.electrical_energy, f6);
+    json.Key("measured_heat_J").Number(last.heat, f6);
     json.Key("predicted_com_J").Number(predicted_com, f6).Key("predicted_heat_J").Number(predicted_heat, f6);
     json.Key("predicted_total_J").Number(predicted_com + predicted_heat, f6).EndObject();
     json.Key("slips").BeginArray();
@@ -255,6 +193,7 @@ std::string WalkJson(const FootstepScenario& scenario, const std::string& object
     json.Key("predicted_com_J").Number(s.predicted_com_work, f6).Key("predicted_heat_J").Number(s.predicted_heat, f6);
     MaybeNumber(json, "measured_com_J", s.measured_com_energy, f6);
     MaybeNumber(json, "measured_electrical_J", s.measured_electrical_energy, f6);
+    MaybeNumber(json, "measured_heat_J", s.measured_heat, f6);
     json.EndObject();
   }
   json.EndArray().EndObject();
@@ -279,8 +218,8 @@ int Run(const WalkArguments& args) {
   const std::string urdf_path = DataDirectory() + "/robots/cairn_humanoid.urdf";
   const std::string control = DataDirectory() + "/robots/cairn_humanoid_control.yaml";
   const auto walking_model = std::make_shared<const WalkingModel>(WalkingModel::Load(walking));
-  const auto oracle = std::make_shared<const TransitionOracle>(LoadOrBuildOracle(
-      args.oracle_cache.empty() ? DefaultOracleCache() : args.oracle_cache, *walking_model, objective));
+  const auto oracle =
+      std::make_shared<const TransitionOracle>(LoadChosenOracle(args.oracle, walking_model, objective));
   multibody::UrdfOptions urdf;
   urdf.floating_base = true;
   const auto robot = std::make_shared<const multibody::Model>(multibody::ParseUrdfFile(urdf_path, urdf));
@@ -290,7 +229,8 @@ int Run(const WalkArguments& args) {
   WalkSetup setup = WalkSetupFromScenario(scenario, oracle, walking_model, objective, robot, controller);
   setup.stabilizer.method = args.stabilizer;
   setup.feedback = !args.open_loop;
-  if (args.no_refine) setup.refine_model = nullptr;
+  // The refinement optimises the analytic model's cost: steps priced by the plant keep the plant's timings.
+  if (args.no_refine || args.oracle.plant()) setup.refine_model = nullptr;
   setup.plant.bullet.time_step = args.step;
   setup.plant.drives = multibody::LoadJointDrives(*robot, walking);
   setup.plant.stop_on_fall = true;
@@ -314,7 +254,7 @@ int Run(const WalkArguments& args) {
   } else {
     record = RunWalk(BuildWalkDiagram(setup), run);
   }
-  const std::vector<WalkStepComparison> steps = CompareSteps(record);
+  const std::vector<WalkStepComparison> steps = CompareWalkSteps(record);
   const std::string json =
       WalkJson(scenario, objective_name, args.stabilizer, setup.feedback, *robot, setup.plant.sole_bodies, record,
                steps, perceived.get());
@@ -406,7 +346,8 @@ int Run(const WalkArguments& args) {
                           : std::nan(""));
     std::printf("fall       %s\n", record.fell ? record.fall_reason.c_str() : "none");
     std::printf("slips      %zu\n", record.slips.size());
-    std::printf("energy     E_COM %.2f J, E_ele %.2f J measured\n", last.com_energy, last.electrical_energy);
+    std::printf("energy     E_COM %.2f J, E_ele %.2f J (Joule heat %.2f J) measured\n", last.com_energy,
+                last.electrical_energy, last.heat);
     if (args.perceive) std::printf("time       perception %.2f s (the first frame)\n", perception_seconds);
     std::printf("time       footsteps %.2f s, trajectory %.2f s, stabiliser %.2f s, plant %.2f s\n",
                 record.start.seconds.footsteps, record.start.seconds.trajectory, record.start.seconds.stabilizer,
@@ -441,8 +382,7 @@ void RegisterWalkCommand(CommandRegistry* registry) {
                   app.add_option("--out", args->out,
                                  "Folder for walk.json, walk_zmp.png, walk_com.png, walk_steps.png, walk.html "
                                  "(replaced as a whole)");
-                  app.add_option("--oracle-cache", args->oracle_cache,
-                                 "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
+                  AddOracleOptions(app, &args->oracle);
                   app.add_flag("--open-loop", args->open_loop,
                                "Play the stabilised reference without the capture-point feedback (BalanceFeedback)");
                   app.add_flag("--no-refine", args->no_refine,
@@ -471,8 +411,7 @@ void RegisterWalkCommand(CommandRegistry* registry) {
         app.add_option("--out", args->out,
                        "Folder for run.json, timing.json, perception.png, terrain.png, run.html and, when walked, "
                        "walk_zmp.png, walk_com.png, walk_steps.png, walk.html (replaced as a whole)");
-        app.add_option("--oracle-cache", args->oracle_cache,
-                       "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
+        AddOracleOptions(app, &args->oracle);
         app.add_flag("--json", args->json, "Print run.json and the stages' wall times as one JSON object");
         return [args] { return Run(*args); };
       });

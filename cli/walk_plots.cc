@@ -11,100 +11,14 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "plot_axes.h"
+#include "report_drawing.h"
 
 namespace cairn::cli {
 namespace {
 
-const cv::Scalar kBlack(0, 0, 0), kGrid(225, 225, 225), kBlue(200, 90, 0), kRed(0, 0, 210), kGreen(0, 140, 0),
-    kGrey(150, 150, 150), kOrange(0, 140, 255);
-
-void Text(cv::Mat& image, const std::string& text, cv::Point at, double scale = 0.42) {
-  cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, scale, kBlack, 1, cv::LINE_AA);
-}
-
-// A tick label: three significant digits are enough to read a plot.
-std::string Tick(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.3g", std::abs(value) < 1e-12 ? 0.0 : value);
-  return text;
-}
-
-// A plot area mapping data (x, y) to pixels, with ticks, labels and a title; `integer_x` puts one x tick at every
-// integer (steps) instead of five evenly spaced ones.
-struct Axes {
-  cv::Rect area;
-  double x0, x1, y0, y1;
-  bool integer_x{false};
-  cv::Point Map(double x, double y) const {
-    return {area.x + static_cast<int>(std::lround((x - x0) / (x1 - x0) * area.width)),
-            area.y + area.height - static_cast<int>(std::lround((y - y0) / (y1 - y0) * area.height))};
-  }
-  void Draw(cv::Mat& image, const std::string& title, const std::string& x_label, const std::string& y_label) const {
-    for (int k = 0; k <= 4; ++k) {
-      const double y = y0 + (y1 - y0) * k / 4.0;
-      const cv::Point py = Map(x0, y);
-      cv::line(image, {area.x, py.y}, {area.x + area.width, py.y}, kGrid, 1);
-      Text(image, Tick(y), {area.x - 52, py.y + 4}, 0.38);
-    }
-    std::vector<double> xs;
-    if (integer_x) {
-      for (int i = static_cast<int>(std::ceil(x0)); i <= static_cast<int>(std::floor(x1)) && xs.size() < 200; ++i) {
-        xs.push_back(i);
-      }
-    } else {
-      for (int k = 0; k <= 4; ++k) xs.push_back(x0 + (x1 - x0) * k / 4.0);
-    }
-    for (double x : xs) {
-      const cv::Point px = Map(x, y0);
-      cv::line(image, {px.x, area.y}, {px.x, area.y + area.height}, kGrid, 1);
-      Text(image, Tick(x), {px.x - 12, area.y + area.height + 16}, 0.38);
-    }
-    cv::rectangle(image, area, kBlack, 1);
-    Text(image, title, {area.x + 40, area.y - 10}, 0.5);
-    Text(image, x_label, {area.x + area.width / 2 - 30, area.y + area.height + 36});
-    Text(image, y_label, {4, area.y - 10 + 0});
-  }
-};
-
-// Data range with a margin; a flat range becomes one unit wide.
-std::pair<double, double> Range(const std::vector<double>& values, double margin = 0.05) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (double v : values) {
-    if (!std::isfinite(v)) continue;
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  if (!std::isfinite(lo)) return {0.0, 1.0};
-  if (hi - lo < 1e-9) {
-    lo -= 0.5;
-    hi += 0.5;
-  }
-  const double pad = margin * (hi - lo);
-  return {lo - pad, hi + pad};
-}
-
-void Legend(cv::Mat& image, cv::Point at, const std::vector<std::pair<std::string, cv::Scalar>>& entries) {
-  for (const auto& [label, colour] : entries) {
-    cv::line(image, at, {at.x + 22, at.y}, colour, 2, cv::LINE_AA);
-    Text(image, label, {at.x + 28, at.y + 4}, 0.4);
-    at.y += 16;
-  }
-}
-
-void Polyline(cv::Mat& image, const Axes& axes, const std::vector<Eigen::Vector2d>& points, cv::Scalar colour,
-              int thickness = 1) {
-  std::vector<cv::Point> pixels;
-  for (const Eigen::Vector2d& p : points) {
-    if (p.allFinite()) pixels.push_back(axes.Map(p.x(), p.y()));
-  }
-  if (pixels.size() >= 2) cv::polylines(image, pixels, false, colour, thickness, cv::LINE_AA);
-}
-
-std::string Png(const cv::Mat& image) {
-  std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw std::runtime_error("cannot encode the walk's plot as PNG");
-  return std::string(bytes.begin(), bytes.end());
-}
+const cv::Scalar kBlue(200, 90, 0), kRed(0, 0, 210), kGreen(0, 140, 0), kGrey(150, 150, 150),
+    kOrange(0, 140, 255);
 
 std::vector<std::array<Eigen::Vector2d, 4>> Footholds(const planning::FootstepPlan& plan,
                                                        const planning::BipedGeometry& geometry) {
@@ -142,8 +56,8 @@ std::string WalkZmpPng(const planning::WalkRecord& record, const planning::Biped
       ys.push_back(p.y());
     }
   }
-  auto [x0, x1] = Range(xs);
-  auto [y0, y1] = Range(ys);
+  auto [x0, x1] = PlotRange(xs);
+  auto [y0, y1] = PlotRange(ys);
   // Equal scales on both axes: widen the narrower range.
   const int width = 1000, left = 70, top = 50;
   const double scale = std::min(880.0 / (x1 - x0), 500.0 / (y1 - y0));
@@ -153,22 +67,22 @@ std::string WalkZmpPng(const planning::WalkRecord& record, const planning::Biped
   y0 = cy - 250.0 / scale;
   y1 = cy + 250.0 / scale;
   cv::Mat image(top + 500 + 130, width, CV_8UC3, cv::Scalar(255, 255, 255));
-  const Axes axes{cv::Rect(left, top, 880, 500), x0, x1, y0, y1};
+  const PlotAxes axes{cv::Rect(left, top, 880, 500), x0, x1, y0, y1};
   axes.Draw(image, "ZMP and COM, top view (footholds of the plan in grey)", "x [m]", "y [m]");
   for (const auto& foot : feet) {
     std::vector<cv::Point> polygon;
     for (const Eigen::Vector2d& c : foot) polygon.push_back(axes.Map(c.x(), c.y()));
     cv::polylines(image, polygon, true, kGrey, 1, cv::LINE_AA);
   }
-  Polyline(image, axes, zmp_ref, kBlue, 2);
+  PlotPolyline(image, axes, zmp_ref, kBlue, 2);
   for (const Eigen::Vector2d& p : zmp) {
     if (p.allFinite()) cv::circle(image, axes.Map(p.x(), p.y()), 1, kRed, cv::FILLED);
   }
-  Polyline(image, axes, com, kGreen, 1);
-  Legend(image, {left + 10, top + 500 + 60},
+  PlotPolyline(image, axes, com, kGreen, 1);
+  PlotLegend(image, {left + 10, top + 500 + 60},
          {{"reference ZMP (stabiliser)", kBlue}, {"measured ZMP (plant)", kRed}, {"measured COM", kGreen},
           {"planned footholds", kGrey}});
-  return Png(image);
+  return EncodePng(image, "the walk's plot");
 }
 
 std::string WalkComPng(const planning::WalkRecord& record) {
@@ -187,15 +101,15 @@ std::string WalkComPng(const planning::WalkRecord& record) {
       measured.emplace_back(s.time, s.com[axis]);
       values.push_back(s.com[axis]);
     }
-    const auto [y0, y1] = Range(values);
-    const Axes axes{cv::Rect(left, 40 + axis * (panel + 60), 880, panel), 0.0, t_end, y0, y1};
+    const auto [y0, y1] = PlotRange(values);
+    const PlotAxes axes{cv::Rect(left, 40 + axis * (panel + 60), 880, panel), 0.0, t_end, y0, y1};
     axes.Draw(image, axis == 0 ? "COM x against time" : "COM y against time", "time [s]",
               axis == 0 ? "x [m]" : "y [m]");
-    Polyline(image, axes, reference, kBlue, 2);
-    Polyline(image, axes, measured, kRed, 1);
+    PlotPolyline(image, axes, reference, kBlue, 2);
+    PlotPolyline(image, axes, measured, kRed, 1);
   }
-  Legend(image, {left + 10, 2 * panel + 150}, {{"stabilised reference", kBlue}, {"plant", kRed}});
-  return Png(image);
+  PlotLegend(image, {left + 10, 2 * panel + 150}, {{"stabilised reference", kBlue}, {"plant", kRed}});
+  return EncodePng(image, "the walk's plot");
 }
 
 std::string WalkStepsPng(const std::vector<WalkStepComparison>& steps) {
@@ -211,8 +125,8 @@ std::string WalkStepsPng(const std::vector<WalkStepComparison>& steps) {
                               const std::vector<Series>& series) {
     std::vector<double> all{0.0};
     for (const Series& s : series) all.insert(all.end(), s.values.begin(), s.values.end());
-    const auto [lo, hi] = Range(all);
-    const Axes axes{cv::Rect(left, 40 + row * (panel + 60), 880, panel), 0.5, n + 0.5, std::min(0.0, lo), hi, true};
+    const auto [lo, hi] = PlotRange(all);
+    const PlotAxes axes{cv::Rect(left, 40 + row * (panel + 60), 880, panel), 0.5, n + 0.5, std::min(0.0, lo), hi, true};
     axes.Draw(image, title, "step", unit);
     const double bar = 0.8 / static_cast<double>(series.size());
     for (std::size_t s = 0; s < series.size(); ++s) {
@@ -223,7 +137,7 @@ std::string WalkStepsPng(const std::vector<WalkStepComparison>& steps) {
         cv::rectangle(image, axes.Map(x, 0.0), axes.Map(x + bar, v), series[s].colour, cv::FILLED);
       }
     }
-    Legend(image, {left + 700, 40 + row * (panel + 60) + 14}, [&] {
+    PlotLegend(image, {left + 700, 40 + row * (panel + 60) + 14}, [&] {
       std::vector<std::pair<std::string, cv::Scalar>> entries;
       for (const Series& s : series) entries.emplace_back(s.label, s.colour);
       return entries;
@@ -246,7 +160,7 @@ std::string WalkStepsPng(const std::vector<WalkStepComparison>& steps) {
   panel_plot(0, "RCOF per step: planner's prediction, plant's measurements, allowed friction", "RCOF",
              {rcof_p, rcof_net, rcof_m, mu});
   panel_plot(1, "Energy per step (missing bars: the step was not completed)", "J", {ecom_p, ecom_m, e_p, e_m});
-  return Png(image);
+  return EncodePng(image, "the walk's plot");
 }
 
 }  // namespace cairn::cli

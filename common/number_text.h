@@ -7,7 +7,7 @@
 
 namespace cairn {
 
-/// `x` with the fewest digits that read back as the same double ("%.17g"), for files that must round-trip.
+/// `x` with enough digits to read back as the same double ("%.17g"), for files that must round-trip.
 std::string FormatExact(double x);
 
 /// `x` with six significant digits ("%g"), for error messages and reports.

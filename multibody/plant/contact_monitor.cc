@@ -210,7 +210,9 @@ void ContactMonitor::Update(const BulletPlant& plant, const Eigen::Ref<const Eig
     if (drive.torque_constant <= 0.0) continue;
     const Eigen::Index iv = static_cast<Eigen::Index>(i);
     const double current = tau[iv] / (drive.gear_ratio * drive.torque_constant);
-    electrical_energy_ += (std::abs(tau[iv] * v[iv]) + drive.resistance * current * current) * dt;
+    const double joule = drive.resistance * current * current * dt;
+    electrical_energy_ += std::abs(tau[iv] * v[iv]) * dt + joule;
+    heat_ += joule;
   }
 }
 

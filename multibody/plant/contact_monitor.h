@@ -18,7 +18,8 @@ namespace cairn::multibody {
 /// What a walking experiment measures, updated after every plant step: per sole the contact wrench, centre of
 /// pressure, loaded flag and slips; each stance's RCOF (thesis eq. 2.2); the ZMP; a fall; E_COM (eq. 2.1,
 /// ∫|v_COM · F| dt with F the total external force) and E_ele (eq. 2.6, Σ_i ∫|τ_i ω_i| + R_i I_i² dt with
-/// I = τ / (r K_τ), over the joints that have drive data).
+/// I = τ / (r K_τ), over the joints that have drive data) with its Joule-heat share Σ_i ∫ R_i I_i² dt (the motor heat
+/// the walking model predicts, eq. 2.6's second term).
 class ContactMonitor {
  public:
   /// Monitors `plant`'s robot: `sole_bodies` names the left and right sole bodies (or links), `base_body` the
@@ -50,6 +51,8 @@ class ContactMonitor {
   double com_energy() const { return com_energy_; }
   /// E_ele so far (J).
   double electrical_energy() const { return electrical_energy_; }
+  /// The Joule heat in E_ele so far, Σ_i ∫ R_i I_i² dt (J).
+  double heat() const { return heat_; }
   /// Base height above the lower sole frame (m) after the last update.
   double base_height() const { return base_height_; }
 
@@ -77,6 +80,7 @@ class ContactMonitor {
   double fall_time_;
   double com_energy_ = 0.0;
   double electrical_energy_ = 0.0;
+  double heat_ = 0.0;
   double base_height_ = 0.0;
 };
 

@@ -26,6 +26,8 @@ struct HumanoidMeasurements {
   double com_energy = 0.0;
   /// E_ele (J) so far.
   double electrical_energy = 0.0;
+  /// The Joule heat in E_ele (J) so far, Σ R I² dt: what the walking model's heat term predicts.
+  double heat = 0.0;
   /// True once the robot fell.
   bool fallen = false;
   /// Why it fell.

@@ -102,10 +102,10 @@ HumanoidPlant::HumanoidPlant(const Model& model, std::vector<TerrainBox> terrain
   DeclareVectorOutputPort(
       "zmp", 3, [this](const Context& c, Eigen::VectorXd* y) { *y = Measurements(c).zmp; }, measured);
   DeclareVectorOutputPort(
-      "energy", 2,
+      "energy", 3,
       [this](const Context& c, Eigen::VectorXd* y) {
         const HumanoidMeasurements& m = Measurements(c);
-        *y << m.com_energy, m.electrical_energy;
+        *y << m.com_energy, m.electrical_energy, m.heat;
       },
       measured);
   DeclarePeriodicUnrestrictedUpdateEvent(options_.bullet.time_step, 0.0,
@@ -162,6 +162,7 @@ EventStatus HumanoidPlant::Update(const Context& context, State* next) const {
   m.zmp = monitor.zmp();
   m.com_energy = monitor.com_energy();
   m.electrical_energy = monitor.electrical_energy();
+  m.heat = monitor.heat();
   m.fallen = monitor.fallen();
   m.fall_reason = monitor.fall_reason();
   m.torque = tau;

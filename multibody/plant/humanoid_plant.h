@@ -28,7 +28,7 @@ namespace cairn::multibody {
 /// | output `slips` | abstract std::vector<SlipEvent> | every slip so far |
 /// | output `stances` | abstract std::vector<StancePhase> | every stance so far, with its RCOF (eq. 2.2) |
 /// | output `zmp` | vector 3 | ZMP from the foot contacts (NaN in the air) |
-/// | output `energy` | vector 2 | [E_COM (eq. 2.1), E_ele (eq. 2.6)] in J, accumulated |
+/// | output `energy` | vector 3 | [E_COM (eq. 2.1), E_ele (eq. 2.6), E_ele's Joule heat Σ R I² dt] in J, accumulated |
 ///
 /// State: discrete group 0 is [q; v]; abstract state 0 the HumanoidMeasurements. The Bullet world lives in
 /// per-context storage and follows the context's state: when the state was changed from outside (SetDiscreteState)

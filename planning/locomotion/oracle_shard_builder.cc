@@ -30,12 +30,14 @@ std::string ChunkName(int chunk) {
 }  // namespace
 
 OracleShardBuilder::OracleShardBuilder(const WalkingModel& model, WalkingObjective objective, OracleGrid grid,
-                                       std::string checkpoint_folder, int cells_per_chunk)
+                                       std::string checkpoint_folder, int cells_per_chunk,
+                                       std::shared_ptr<const TransitionSource> source)
     : model_(&model),
       objective_(objective),
       grid_(std::move(grid)),
       folder_(std::move(checkpoint_folder)),
-      cells_per_chunk_(cells_per_chunk) {
+      cells_per_chunk_(cells_per_chunk),
+      source_(std::move(source)) {
   grid_.Validate(model.reach());
   if (folder_.empty()) throw std::invalid_argument("OracleShardBuilder: the checkpoint folder name is empty");
   if (cells_per_chunk < 1 || cells_per_chunk > kMaxCellsPerChunk) {
@@ -51,7 +53,7 @@ OracleShardBuilder::OracleShardBuilder(const WalkingModel& model, WalkingObjecti
                                 "; use larger chunks");
   }
   num_chunks_ = static_cast<int>(chunks);
-  key_ = TransitionOracle::BuildKey(model, objective, grid_);
+  key_ = TransitionOracle::BuildKey(model, objective, grid_, source_.get());
 }
 
 std::size_t OracleShardBuilder::FirstCell(int chunk) const {
@@ -149,6 +151,7 @@ OracleShardBuilder::ShardReport OracleShardBuilder::BuildShard(int rank, int num
   std::size_t total = 0, finished = 0;
   for (const int chunk : chunks) total += CellsIn(chunk) * grid_.mu.size();
   OracleBuildOptions chunk_options = options;
+  chunk_options.source = source_;
   if (options.progress) {
     chunk_options.progress = [&](std::size_t done, std::size_t) { options.progress(finished + done, total); };
   }
@@ -213,7 +216,7 @@ TransitionOracle OracleShardBuilder::Merge() const {
                              " chunks are not ready (" + list + (bad > 3 ? "; ..." : "") +
                              "); run the build again to compute them");
   }
-  return TransitionOracle::FromEntries(*model_, objective_, grid_, std::move(all));
+  return TransitionOracle::FromEntries(*model_, objective_, grid_, std::move(all), source_.get());
 }
 
 void OracleShardBuilder::RemoveCheckpoints() const {

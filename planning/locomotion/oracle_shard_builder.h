@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,9 +44,11 @@ class OracleShardBuilder {
 
   /// Throws std::invalid_argument for a grid that does not fit the model's reach, cells_per_chunk outside
   /// [1, kMaxCellsPerChunk], more than kMaxChunks chunks, or an empty checkpoint folder name. The model must
-  /// outlive the builder.
+  /// outlive the builder. `source` gives the entries (null: the analytic model); it is part of the build key, and
+  /// BuildShard uses it whatever its options say.
   OracleShardBuilder(const WalkingModel& model, WalkingObjective objective, OracleGrid grid,
-                     std::string checkpoint_folder, int cells_per_chunk = 16);
+                     std::string checkpoint_folder, int cells_per_chunk = 16,
+                     std::shared_ptr<const TransitionSource> source = nullptr);
 
   /// Number of chunks of the build.
   int num_chunks() const { return num_chunks_; }
@@ -86,6 +89,7 @@ class OracleShardBuilder {
   int cells_per_chunk_;
   int num_chunks_{0};
   std::uint64_t key_{0};
+  std::shared_ptr<const TransitionSource> source_;
 };
 
 }  // namespace cairn::planning

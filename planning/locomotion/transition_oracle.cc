@@ -96,13 +96,24 @@ std::string AxisLine(const char* name, const std::vector<double>& axis) {
   return line + "\n";
 }
 
+// The source line of a build: the given source's, or the default's.
+std::string SourceLine(const TransitionSource* source) {
+  if (source == nullptr) return TransitionOracle::kSource;
+  std::string line = source->Describe();
+  if (line.empty() || line.find('\n') != std::string::npos || line.size() > 10000) {
+    throw std::invalid_argument("TransitionOracle: the source's description '" + line.substr(0, 80) +
+                                "' must be one non-empty line of at most 10000 characters");
+  }
+  return line;
+}
+
 // The header lines after the magic that say what the entries depend on (and that Load checks).
 std::string HeaderFields(const std::string& robot, std::uint64_t model_hash, WalkingObjective objective,
-                         const OracleGrid& grid) {
+                         const std::string& source, const OracleGrid& grid) {
   std::string fields = "robot " + robot + "\n";
   fields += "model_hash " + HashHex(model_hash) + "\n";
   fields += std::string("objective ") + to_string(objective) + "\n";
-  fields += std::string("source ") + TransitionOracle::kSource + "\n";
+  fields += "source " + source + "\n";
   fields += AxisLine("dx", grid.dx) + AxisLine("dy", grid.dy) + AxisLine("dz", grid.dz) +
             AxisLine("dtheta", grid.dtheta) + AxisLine("mu", grid.mu);
   return fields;
@@ -193,8 +204,9 @@ bool operator==(const OracleGrid& a, const OracleGrid& b) {
 TransitionOracle TransitionOracle::Build(const WalkingModel& model, WalkingObjective objective,
                                          const OracleGrid& grid, const OracleBuildOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  TransitionOracle oracle =
-      FromEntries(model, objective, grid, BuildCells(model, objective, grid, 0, grid.num_displacements(), options));
+  TransitionOracle oracle = FromEntries(model, objective, grid,
+                                        BuildCells(model, objective, grid, 0, grid.num_displacements(), options),
+                                        options.source.get());
   oracle.build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return oracle;
 }
@@ -215,7 +227,9 @@ std::vector<TransitionOracle::Entry> TransitionOracle::BuildCells(const WalkingM
                                 " step displacements, more than the " +
                                 cairn::FormatShort(std::numeric_limits<int>::max()) + " supported; use fewer axis values.");
   }
-  const int threads = ResolveThreadCount(options.num_threads);
+  const ModelTransitionSource analytic(options.optimizer);
+  const TransitionSource& source = options.source != nullptr ? *options.source : analytic;
+  const int threads = source.concurrent() ? ResolveThreadCount(options.num_threads) : 1;
   const std::size_t num_mu = grid.mu.size();
   const std::size_t total = num_cells * num_mu;
   std::vector<Entry> out(total, Entry{});
@@ -238,31 +252,8 @@ std::vector<TransitionOracle::Entry> TransitionOracle::BuildCells(const WalkingM
       const std::size_t i_dy = rest % grid.dy.size();
       const std::size_t i_dx = rest / grid.dy.size();
       const StepDisplacement d{grid.dx[i_dx], grid.dy[i_dy], grid.dz[i_dz], grid.dtheta[i_th]};
-      Entry* entries = &out[static_cast<std::size_t>(band) * num_mu];
-      // From the largest mu down. An optimum that already meets a smaller mu is optimal there too; otherwise
-      // SLSQP follows the optimum from the previous mu, with the global search as the fallback. A step that
-      // is infeasible at some mu is infeasible at every smaller one (the constraint only tightens).
-      for (std::size_t k = num_mu; k-- > 0;) {
-        const double mu = grid.mu[k];
-        if (k + 1 == num_mu) {
-          entries[k] = OptimizeTransition(model, d, mu, objective, nullptr, options.optimizer);
-        } else if (!entries[k + 1].feasible) {
-          entries[k] = Entry{};
-        } else if (entries[k + 1].rcof <= mu) {
-          entries[k] = entries[k + 1];
-        } else {
-          entries[k] = OptimizeTransition(model, d, mu, objective, &entries[k + 1].parameters, options.optimizer);
-          if (!entries[k].feasible) {
-            entries[k] = OptimizeTransition(model, d, mu, objective, nullptr, options.optimizer);
-          }
-        }
-      }
-      // A step feasible at a smaller mu is feasible at every larger one: keep the cost non-increasing in mu.
-      for (std::size_t k = 1; k < num_mu; ++k) {
-        if (entries[k - 1].feasible && (!entries[k].feasible || entries[k - 1].cost < entries[k].cost)) {
-          entries[k] = entries[k - 1];
-        }
-      }
+      const std::vector<Entry> entries = source.CellEntries(model, objective, d, grid.mu);
+      std::copy(entries.begin(), entries.end(), out.begin() + static_cast<std::ptrdiff_t>(band * num_mu));
     } catch (...) {
       int seen = first_failure.load();
       while (band < seen && !first_failure.compare_exchange_weak(seen, band)) {
@@ -277,7 +268,8 @@ std::vector<TransitionOracle::Entry> TransitionOracle::BuildCells(const WalkingM
 }
 
 TransitionOracle TransitionOracle::FromEntries(const WalkingModel& model, WalkingObjective objective,
-                                               const OracleGrid& grid, std::vector<Entry> entries) {
+                                               const OracleGrid& grid, std::vector<Entry> entries,
+                                               const TransitionSource* source) {
   grid.Validate(model.reach());
   if (entries.size() != grid.num_entries()) {
     throw std::invalid_argument("TransitionOracle::FromEntries: " + cairn::FormatShort(entries.size()) +
@@ -289,6 +281,7 @@ TransitionOracle TransitionOracle::FromEntries(const WalkingModel& model, Walkin
   oracle.objective_ = objective;
   oracle.robot_name_ = model.name();
   oracle.model_hash_ = model.content_hash();
+  oracle.source_ = SourceLine(source);
   oracle.entries_ = std::move(entries);
   oracle.Finalize();
   return oracle;
@@ -333,8 +326,9 @@ std::vector<TransitionOracle::Entry> TransitionOracle::DecodeEntries(std::string
   return entries;
 }
 
-std::uint64_t TransitionOracle::BuildKey(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid) {
-  return Fnv1a64(HeaderFields(model.name(), model.content_hash(), objective, grid));
+std::uint64_t TransitionOracle::BuildKey(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
+                                         const TransitionSource* source) {
+  return Fnv1a64(HeaderFields(model.name(), model.content_hash(), objective, SourceLine(source), grid));
 }
 
 void TransitionOracle::Finalize() {
@@ -545,13 +539,13 @@ std::string TransitionOracle::do_description() const {
          cairn::FormatShort(entries_.size()) + " entries (" + cairn::FormatShort(num_feasible()) + " feasible) over " +
          cairn::FormatShort(grid_.dx.size()) + " dx x " + cairn::FormatShort(grid_.dy.size()) + " dy x " +
          cairn::FormatShort(grid_.dz.size()) + " dz x " + cairn::FormatShort(grid_.dtheta.size()) + " dtheta x " +
-         cairn::FormatShort(grid_.mu.size()) + " mu";
+         cairn::FormatShort(grid_.mu.size()) + " mu, source " + source_;
 }
 
 std::string TransitionOracle::Serialize() const {
   const std::string payload = EncodeEntries(entries_);
   std::string header = std::string(kMagic) + "\n";
-  header += HeaderFields(robot_name_, model_hash_, objective_, grid_);
+  header += HeaderFields(robot_name_, model_hash_, objective_, source_, grid_);
   header += "entries " + cairn::FormatShort(entries_.size()) + "\n";
   header += "payload_bytes " + cairn::FormatShort(payload.size()) + "\n";
   header += "checksum " + HashHex(Fnv1a64(payload)) + "\n";
@@ -562,7 +556,7 @@ std::string TransitionOracle::Serialize() const {
 void TransitionOracle::Save(const std::string& path) const { WriteFileAtomically(path, Serialize()); }
 
 TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingModel& model, WalkingObjective objective,
-                                        const OracleGrid& grid) {
+                                        const OracleGrid& grid, const TransitionSource* source) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open the transition oracle file.");
   std::ostringstream buffer;
@@ -597,9 +591,10 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
   if (stored_objective != to_string(objective)) {
     fail("made for objective '" + stored_objective + "', not '" + to_string(objective) + "'.");
   }
-  const std::string source = field("source");
-  if (source != TransitionOracle::kSource) {
-    fail("built from source '" + source + "', not '" + TransitionOracle::kSource + "'.");
+  const std::string stored_source = field("source");
+  const std::string wanted_source = SourceLine(source);
+  if (stored_source != wanted_source) {
+    fail("built from source '" + stored_source + "', not '" + wanted_source + "'.");
   }
   OracleGrid stored;
   for (auto [name, axis] : {std::pair<const char*, std::vector<double>*>{"dx", &stored.dx},
@@ -631,7 +626,7 @@ TransitionOracle TransitionOracle::Load(const std::string& path, const WalkingMo
     fail("corrupt: payload checksum mismatch.");
   }
 
-  return FromEntries(model, objective, grid, DecodeEntries(std::string_view(bytes).substr(position), entries));
+  return FromEntries(model, objective, grid, DecodeEntries(std::string_view(bytes).substr(position), entries), source);
 }
 
 TransitionOracle TransitionOracle::LoadOrBuild(const std::string& path, const WalkingModel& model,
@@ -642,7 +637,7 @@ TransitionOracle TransitionOracle::LoadOrBuild(const std::string& path, const Wa
   std::error_code exists_error;
   if (std::filesystem::exists(path, exists_error)) {
     try {
-      TransitionOracle oracle = Load(path, model, objective, grid);
+      TransitionOracle oracle = Load(path, model, objective, grid, options.source.get());
       if (log != nullptr) *log << "Loaded transition oracle " << path << " (" << oracle.num_entries() << " entries)\n";
       return oracle;
     } catch (const std::runtime_error& error) {

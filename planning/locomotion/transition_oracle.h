@@ -4,12 +4,15 @@
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <cairn/planning/locomotion/step_cost_model.h>
 #include <cairn/planning/locomotion/transition_optimizer.h>
+#include <cairn/planning/locomotion/transition_source.h>
+#include <cairn/planning/locomotion/model_transition_source.h>
 #include <cairn/planning/locomotion/walking_model.h>
 #include <cairn/planning/locomotion/walking_objective.h>
 
@@ -60,18 +63,19 @@ struct OracleBuildOptions {
   int num_threads{0};
   /// Called from the building thread's workers, serialised, as (entries done, entries total); for a progress bar.
   std::function<void(std::size_t done, std::size_t total)> progress;
-  /// Settings of each OptimizeTransition.
+  /// Settings of each OptimizeTransition of the default source.
   TransitionOptimizerOptions optimizer;
+  /// Where the entries come from; null: the analytic model (ModelTransitionSource with `optimizer`). A source that
+  /// is not concurrent() is built on one thread whatever num_threads says.
+  std::shared_ptr<const TransitionSource> source;
 };
 
 /// Precomputed minimum-cost transitions (thesis 2.4.1: "pre-computed versions of (2.4) for speed") over an
 /// OracleGrid, for one robot and objective: a StepCostModel answering in microseconds.
 ///
-/// Building: every displacement cell solves OptimizeTransition for its mu values from the largest down (the
-/// largest with DIRECT + SLSQP). A solution whose RCOF is within the next smaller mu is reused (it is optimal
-/// there too); otherwise SLSQP is warm-started from it, falling back to DIRECT + SLSQP if that fails; a cell
-/// infeasible at some mu is infeasible at every smaller one. A final pass keeps the cost non-increasing in mu
-/// (a solution feasible at a smaller mu is feasible at every larger one).
+/// Building: every displacement cell asks the build's TransitionSource for its entries at the grid's mu values
+/// (by default ModelTransitionSource: OptimizeTransition from the largest mu down, warm-started along the way; see
+/// there). Entries never cost more at a larger mu (a step feasible at a smaller mu is feasible at every larger one).
 ///
 /// Lookup (Evaluate): mu is FLOORED to the largest grid value <= mu_allowed (conservative: below the smallest
 /// value the step is infeasible); the displacement is interpolated multilinearly over the 16 corners of its
@@ -84,8 +88,9 @@ struct OracleBuildOptions {
 /// reproduce (dx, dy) exactly and hypot is convex, so an interpolated cost over its hypot is at least the
 /// smallest corner ratio: the bound holds for every lookup.
 ///
-/// Sources: every entry comes from the analytic model (OptimizeTransition over the pattern generator), source
-/// "model". The source is part of the file header, so a table is never loaded for a source it was not built from.
+/// Sources: the source's line (TransitionSource::Describe: "model" for the analytic default, or e.g. "plant ..."
+/// with its settings) is part of the file header and of BuildKey, so a table is never loaded for a source, or
+/// source settings, it was not built from.
 ///
 /// File format: a text header (magic "cairn-transition-oracle 2", robot name, model content hash, objective,
 /// source, the grid, payload size and its FNV-1a 64 checksum) followed by the binary payload (little-endian
@@ -103,8 +108,8 @@ class TransitionOracle final : public StepCostModel {
   static TransitionOracle Build(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
                                 const OracleBuildOptions& options = OracleBuildOptions());
 
-  /// The source name written into the header: "model".
-  static constexpr const char* kSource = "model";
+  /// The default source's name written into the header: "model".
+  static constexpr const char* kSource = ModelTransitionSource::kName;
 
   /// The entries of displacement cells [first_cell, first_cell + num_cells) (cells in entries() order, each
   /// with its grid.mu.size() entries, mu fastest), computed as Build computes them; progress counts these
@@ -113,10 +118,10 @@ class TransitionOracle final : public StepCostModel {
                                        std::size_t first_cell, std::size_t num_cells,
                                        const OracleBuildOptions& options = OracleBuildOptions());
 
-  /// The table of `entries` (all of the grid's, in entries() order). Throws std::invalid_argument for a bad grid
-  /// or a count other than grid.num_entries().
+  /// The table of `entries` (all of the grid's, in entries() order) from `source` (null: the default "model").
+  /// Throws std::invalid_argument for a bad grid or a count other than grid.num_entries().
   static TransitionOracle FromEntries(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
-                                      std::vector<Entry> entries);
+                                      std::vector<Entry> entries, const TransitionSource* source = nullptr);
 
   /// Bytes of one stored entry (9 little-endian doubles).
   static constexpr std::size_t kBytesPerEntry = 72;
@@ -127,18 +132,19 @@ class TransitionOracle final : public StepCostModel {
 
   /// A 64-bit key of what a table's entries depend on: the robot's name and content hash, the objective, the
   /// source and the grid (the header fields Load checks). Pieces of a build carry it.
-  static std::uint64_t BuildKey(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid);
+  static std::uint64_t BuildKey(const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
+                                const TransitionSource* source = nullptr);
 
-  /// Reads a table written by Save and checks it against `model` (robot name and content hash), `objective` and
-  /// `grid`. Throws std::runtime_error whose message names the file and says what differs or that it is
-  /// corrupt (bad magic, truncated, checksum mismatch).
+  /// Reads a table written by Save and checks it against `model` (robot name and content hash), `objective`,
+  /// `grid` and `source`'s line (null: the default "model"). Throws std::runtime_error whose message names the file
+  /// and says what differs or that it is corrupt (bad magic, truncated, checksum mismatch).
   static TransitionOracle Load(const std::string& path, const WalkingModel& model, WalkingObjective objective,
-                               const OracleGrid& grid);
+                               const OracleGrid& grid, const TransitionSource* source = nullptr);
 
-  /// Load, or Build and Save when the file is missing, stale or corrupt; writes one line saying which (and
-  /// why it rebuilt) to `log` if not null. Creates the file's folder when missing. When the folder cannot be
-  /// created or the file cannot be written, warns once (one line to `log`, or to std::cerr when `log` is null)
-  /// and returns the table it built: the cache is an optimisation, never a reason to fail.
+  /// Load (for options.source), or Build and Save when the file is missing, stale or corrupt; writes one line
+  /// saying which (and why it rebuilt) to `log` if not null. Creates the file's folder when missing. When the
+  /// folder cannot be created or the file cannot be written, warns once (one line to `log`, or to std::cerr when
+  /// `log` is null) and returns the table it built: the cache is an optimisation, never a reason to fail.
   static TransitionOracle LoadOrBuild(const std::string& path, const WalkingModel& model, WalkingObjective objective,
                                       const OracleGrid& grid, const OracleBuildOptions& options,
                                       std::ostream* log);
@@ -152,6 +158,8 @@ class TransitionOracle final : public StepCostModel {
   WalkingObjective objective() const { return objective_; }
   const std::string& robot_name() const { return robot_name_; }
   std::uint64_t model_hash() const { return model_hash_; }
+  /// The source's line the entries came from (TransitionSource::Describe; "model" for the default).
+  const std::string& source() const { return source_; }
   std::size_t num_entries() const { return entries_.size(); }
   /// Entry at grid indices (dx, dy, dz, dtheta, mu).
   const Entry& entry(std::size_t i_dx, std::size_t i_dy, std::size_t i_dz, std::size_t i_dtheta,
@@ -181,6 +189,7 @@ class TransitionOracle final : public StepCostModel {
   WalkingObjective objective_{WalkingObjective::kComWorkPlusHeat};
   std::string robot_name_;
   std::uint64_t model_hash_{0};
+  std::string source_{kSource};
   StepReach reach_;
   std::vector<Entry> entries_;
   double min_cost_per_step_{0.0};

@@ -76,9 +76,21 @@ WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_pt
 
 WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* terrain_source,
                           systems::DiagramBuilder* builder) {
-  if (setup.cost_model == nullptr) throw std::invalid_argument("BuildWalkDiagram: the step cost model is null");
-  if (terrain_source == nullptr && setup.terrain == nullptr) {
-    throw std::invalid_argument("BuildWalkDiagram: the planner's terrain is null");
+  const bool fixed_plan = setup.plan != nullptr;
+  if (fixed_plan) {
+    if (!setup.plan->found) {
+      throw std::invalid_argument("BuildWalkDiagram: the fixed plan has no steps to walk (" + setup.plan->reason +
+                                  "); give a plan that was found, or none to plan one");
+    }
+    if (terrain_source != nullptr) {
+      throw std::invalid_argument("BuildWalkDiagram: a terrain source was given with a fixed plan, which is never "
+                                  "replanned; give one or the other");
+    }
+  } else {
+    if (setup.cost_model == nullptr) throw std::invalid_argument("BuildWalkDiagram: the step cost model is null");
+    if (terrain_source == nullptr && setup.terrain == nullptr) {
+      throw std::invalid_argument("BuildWalkDiagram: the planner's terrain is null");
+    }
   }
   if (setup.robot == nullptr) throw std::invalid_argument("BuildWalkDiagram: the robot model is null");
   if (setup.controller == nullptr) throw std::invalid_argument("BuildWalkDiagram: the PD controller is null");
@@ -88,16 +100,26 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
                                 " must be in [0, 1] (0: none)");
   }
   WalkDiagram walk;
-  auto* start = builder->AddNamedSystem<systems::ConstantValueSource<Stance>>("start", setup.start);
-  auto* goal = builder->AddNamedSystem<systems::ConstantValueSource<StanceGoal>>("goal", setup.goal);
-  if (terrain_source == nullptr) {
-    terrain_source =
-        &builder->AddNamedSystem<systems::ConstantValueSource<TerrainMap>>("terrain", *setup.terrain)->GetOutputPort("y0");
+  if (fixed_plan) {
+    walk.plan = &builder->AddNamedSystem<systems::ConstantValueSource<FootstepPlan>>("footsteps", *setup.plan)
+                     ->GetOutputPort("y0");
+  } else {
+    auto* start = builder->AddNamedSystem<systems::ConstantValueSource<Stance>>("start", setup.start);
+    auto* goal = builder->AddNamedSystem<systems::ConstantValueSource<StanceGoal>>("goal", setup.goal);
+    if (terrain_source == nullptr) {
+      terrain_source = &builder->AddNamedSystem<systems::ConstantValueSource<TerrainMap>>("terrain", *setup.terrain)
+                            ->GetOutputPort("y0");
+    }
+    auto* footsteps = builder->AddNamedSystem<FootstepPlanner>("footsteps", setup.cost_model, setup.geometry,
+                                                               setup.planner, setup.refine_model, setup.objective);
+    builder->Connect(*terrain_source, footsteps->get_terrain_input_port());
+    builder->Connect(start->GetOutputPort("y0"), footsteps->get_start_input_port());
+    builder->Connect(goal->GetOutputPort("y0"), footsteps->get_goal_input_port());
+    walk.footsteps = footsteps;
+    walk.plan = &footsteps->get_plan_output_port();
   }
   auto* environment =
       builder->AddNamedSystem<systems::ConstantValueSource<std::vector<EnvironmentBox>>>("environment", setup.environment);
-  auto* footsteps = builder->AddNamedSystem<FootstepPlanner>("footsteps", setup.cost_model, setup.geometry,
-                                                             setup.planner, setup.refine_model, setup.objective);
   auto* trajectory = builder->AddNamedSystem<TrajectoryOptimizer>("trajectory", setup.robot, setup.trajectory);
   auto* stabilizer = builder->AddNamedSystem<Stabilizer>("stabilizer", setup.robot, setup.stabilizer);
   auto* player = builder->AddNamedSystem<StabilizedReferencePlayer>("player", setup.robot);
@@ -105,7 +127,8 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
   if (setup.gravity_feedforward > 0.0) plant_options.torque_input = true;
   auto* plant = builder->AddNamedSystem<multibody::HumanoidPlant>(
       "plant", *setup.robot, setup.plant_terrain, *setup.controller,
-      StandingAtStart(*setup.robot, setup.plant.sole_bodies, setup.start), plant_options);
+      StandingAtStart(*setup.robot, setup.plant.sole_bodies, fixed_plan ? setup.plan->start : setup.start),
+      plant_options);
   if (setup.gravity_feedforward > 0.0) {
     auto* feedforward = builder->AddNamedSystem<GravityFeedforward>("feedforward", setup.robot,
                                                                     setup.plant.sole_bodies, setup.gravity_feedforward);
@@ -114,10 +137,7 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
     builder->Connect(feedforward->get_torque_output_port(), plant->GetInputPort("torque"));
     walk.feedforward = feedforward;
   }
-  builder->Connect(*terrain_source, footsteps->get_terrain_input_port());
-  builder->Connect(start->GetOutputPort("y0"), footsteps->get_start_input_port());
-  builder->Connect(goal->GetOutputPort("y0"), footsteps->get_goal_input_port());
-  builder->Connect(footsteps->get_plan_output_port(), trajectory->get_plan_input_port());
+  builder->Connect(*walk.plan, trajectory->get_plan_input_port());
   builder->Connect(environment->GetOutputPort("y0"), trajectory->get_environment_input_port());
   builder->Connect(trajectory->get_trajectory_output_port(), stabilizer->get_trajectory_input_port());
   builder->Connect(stabilizer->get_reference_output_port(), player->get_reference_input_port());
@@ -131,7 +151,6 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
   } else {
     builder->Connect(player->get_reference_output_port(), plant->GetInputPort("reference"));
   }
-  walk.footsteps = footsteps;
   walk.trajectory = trajectory;
   walk.stabilizer = stabilizer;
   walk.player = player;
@@ -153,32 +172,37 @@ WalkStart InitializeWalk(const WalkDiagram& walk, systems::Simulator* simulator)
   }
   const auto t0 = std::chrono::steady_clock::now();
   simulator->Initialize();
-  const double footsteps = SecondsSince(t0);
+  const double initialize = SecondsSince(t0);
   WalkStart start = SettleWalk(walk, &simulator->get_mutable_context(), /*replan_footsteps=*/false);
-  start.seconds.footsteps += footsteps;
+  // The initialization pass solved the first stage that had its input: the footstep search, or with a fixed plan
+  // the whole-body problem.
+  (walk.footsteps != nullptr ? start.seconds.footsteps : start.seconds.trajectory) += initialize;
   return start;
 }
 
 WalkStart SettleWalk(const WalkDiagram& walk, systems::Context* root_context, bool replan_footsteps) {
-  if (root_context == nullptr || walk.diagram == nullptr || walk.footsteps == nullptr) {
+  if (root_context == nullptr || walk.diagram == nullptr || walk.plan == nullptr) {
     throw std::invalid_argument("SettleWalk: give a built walk diagram and its root context");
   }
   WalkStart start;
   systems::Context& root = *root_context;
   auto t0 = std::chrono::steady_clock::now();
-  if (replan_footsteps) {
+  if (replan_footsteps && walk.footsteps != nullptr) {
     walk.footsteps->ExecuteForcedEvents(&walk.diagram->GetMutableSubsystemContext(*walk.footsteps, &root));
     start.seconds.footsteps = SecondsSince(t0);
   }
-  const auto& plan = walk.footsteps->get_plan_output_port().Eval<FootstepPlan>(
-      walk.diagram->GetSubsystemContext(*walk.footsteps, root));
+  const auto& plan =
+      walk.plan->Eval<FootstepPlan>(walk.diagram->GetSubsystemContext(walk.plan->get_system(), root));
   if (!plan.found) {
     start.reason = "no footstep plan: " + plan.reason;
     return start;
   }
-  t0 = std::chrono::steady_clock::now();
-  walk.trajectory->ExecuteForcedEvents(&walk.diagram->GetMutableSubsystemContext(*walk.trajectory, &root));
-  start.seconds.trajectory = SecondsSince(t0);
+  // With a fixed plan the trajectory optimizer saw its plan in the initialization pass and has solved it already.
+  if (walk.footsteps != nullptr) {
+    t0 = std::chrono::steady_clock::now();
+    walk.trajectory->ExecuteForcedEvents(&walk.diagram->GetMutableSubsystemContext(*walk.trajectory, &root));
+    start.seconds.trajectory = SecondsSince(t0);
+  }
   const auto& trajectory = walk.trajectory->get_trajectory_output_port().Eval<WholeBodyTrajectory>(
       walk.diagram->GetSubsystemContext(*walk.trajectory, root));
   if (!trajectory.found) {

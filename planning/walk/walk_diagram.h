@@ -42,6 +42,10 @@ struct WalkSetup {
   std::shared_ptr<const TerrainMap> terrain;             ///< the planner's view (friction already Q_{1-eta}); required
   Stance start;
   StanceGoal goal;
+  /// A fixed plan to walk instead of planning one (a periodic gait, a plan saved earlier): a constant source named
+  /// "footsteps" feeds it to the trajectory optimizer, the plant starts at the plan's start stance, and cost_model,
+  /// terrain, start, goal and planner are not used. Null (the default): the FootstepPlanner plans.
+  std::shared_ptr<const FootstepPlan> plan;
   // Whole-body trajectory and stabilisation.
   std::vector<EnvironmentBox> environment;               ///< obstacles for the collision penalty
   TrajectoryOptimizerOptions trajectory;
@@ -86,7 +90,9 @@ WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_pt
 /// "stabilizer", "player", "balance" (only with setup.feedback), "plant".
 struct WalkDiagram {
   std::unique_ptr<systems::Diagram> diagram;
-  const FootstepPlanner* footsteps{nullptr};
+  const FootstepPlanner* footsteps{nullptr};  ///< null when the setup walks a fixed plan
+  /// The plan the trajectory optimizer follows: the FootstepPlanner's output, or the fixed plan's source.
+  const systems::OutputPort* plan{nullptr};
   const TrajectoryOptimizer* trajectory{nullptr};
   const Stabilizer* stabilizer{nullptr};
   const StabilizedReferencePlayer* player{nullptr};
@@ -96,13 +102,15 @@ struct WalkDiagram {
 };
 
 /// Builds the walk diagram. The plant starts standing at the start stance (joints at zero, the lower sole on the
-/// start stance's height); InitializeWalk() puts it on the reference's first sample. Throws std::invalid_argument
-/// for a missing cost model, terrain, robot or controller, and as the blocks' constructors do.
+/// start stance's height; with a fixed plan, its start); InitializeWalk() puts it on the reference's first sample.
+/// Throws std::invalid_argument for a missing cost model or terrain (without a fixed plan), a fixed plan that was
+/// not found, a missing robot or controller, and as the blocks' constructors do.
 WalkDiagram BuildWalkDiagram(const WalkSetup& setup);
 
 /// The walk's blocks added to a larger diagram under construction (the main diagram puts perception in front):
 /// as BuildWalkDiagram, but the footstep planner's terrain comes from `terrain_source` (a TerrainMap output of a
-/// system already in `builder`; null: a constant source of setup.terrain, which may then not be null). The
+/// system already in `builder`; null: a constant source of setup.terrain, which may then not be null; it must be
+/// null with a fixed plan). The
 /// returned diagram pointer is empty: the caller builds and owns the diagram and stores it there.
 WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* terrain_source,
                           systems::DiagramBuilder* builder);
@@ -128,7 +136,8 @@ struct WalkStart {
 /// from the state before any is applied, so at that instant the FootstepPlanner plans while the
 /// TrajectoryOptimizer still sees "not planned yet" and the Stabilizer "not solved yet". So after
 /// simulator->Initialize() this runs the TrajectoryOptimizer's forced event (it now sees the plan), then the
-/// Stabilizer's (it sees the trajectory): each stage once, in the chain's order. Then the plant's state (q, v) is
+/// Stabilizer's (it sees the trajectory): each stage once, in the chain's order. (With a fixed plan the
+/// TrajectoryOptimizer sees its plan in the initialization pass, so only the Stabilizer's event runs after it.) Then the plant's state (q, v) is
 /// set to the reference's first sample (the plant resets its Bullet world to it), so the PD drive starts on its
 /// reference instead of jumping to it. The Stabilizer's per-step check then finds its input unchanged and keeps
 /// its reference. When a stage gives nothing (no footstep plan, no trajectory, no stabilised reference), the
@@ -137,7 +146,8 @@ WalkStart InitializeWalk(const WalkDiagram& walk, systems::Simulator* simulator)
 
 /// InitializeWalk()'s settling after Simulator::Initialize(), for diagrams whose terrain is only known once other
 /// events ran (perception): with `replan_footsteps`, the FootstepPlanner's forced event plans again first (on the
-/// terrain its input shows now). `root_context` is walk.diagram's context. Throws std::invalid_argument for a
+/// terrain its input shows now; a fixed plan is never replanned, and its trajectory, solved in the initialization
+/// pass, is not solved again). `root_context` is walk.diagram's context. Throws std::invalid_argument for a
 /// null context or an unbuilt walk.
 WalkStart SettleWalk(const WalkDiagram& walk, systems::Context* root_context, bool replan_footsteps);
 

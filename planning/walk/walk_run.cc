@@ -19,7 +19,7 @@ WalkRecord RunWalk(const WalkDiagram& walk, const WalkRunOptions& options) {
   if (!(options.settle_time >= 0.0 && options.settle_time <= 60.0)) {
     throw std::invalid_argument("RunWalk: settle_time " + FormatShort(options.settle_time) + " s must be in [0, 60]");
   }
-  if (walk.diagram == nullptr || walk.footsteps == nullptr || walk.trajectory == nullptr ||
+  if (walk.diagram == nullptr || walk.plan == nullptr || walk.trajectory == nullptr ||
       walk.stabilizer == nullptr || walk.plant == nullptr) {
     throw std::invalid_argument("RunWalk: the walk diagram is empty; build it with BuildWalkDiagram()");
   }
@@ -27,8 +27,7 @@ WalkRecord RunWalk(const WalkDiagram& walk, const WalkRunOptions& options) {
   systems::Simulator simulator(*walk.diagram);
   record.start = options.initialize ? options.initialize(&simulator) : InitializeWalk(walk, &simulator);
   const systems::Context& root = simulator.get_context();
-  record.plan = walk.footsteps->get_plan_output_port().Eval<FootstepPlan>(
-      walk.diagram->GetSubsystemContext(*walk.footsteps, root));
+  record.plan = walk.plan->Eval<FootstepPlan>(walk.diagram->GetSubsystemContext(walk.plan->get_system(), root));
   record.trajectory = walk.trajectory->get_trajectory_output_port().Eval<WholeBodyTrajectory>(
       walk.diagram->GetSubsystemContext(*walk.trajectory, root));
   record.reference = walk.stabilizer->get_reference_output_port().Eval<StabilizedTrajectory>(
@@ -54,6 +53,7 @@ WalkRecord RunWalk(const WalkDiagram& walk, const WalkRunOptions& options) {
     s.right_tangential = soles[1].tangential_force;
     s.com_energy = energy[0];
     s.electrical_energy = energy[1];
+    s.heat = energy[2];
     record.samples.push_back(std::move(s));
   };
   const double end = record.reference.duration() + options.settle_time;

@@ -37,6 +37,7 @@ struct WalkSample {
   double left_tangential{0.0}, right_tangential{0.0};  ///< magnitudes of the soles' tangential forces, N
   double com_energy{0.0};                   ///< E_COM so far, J
   double electrical_energy{0.0};            ///< E_ele so far, J
+  double heat{0.0};                         ///< E_ele's Joule heat so far, J
 };
 
 /// Everything a walk produced: each stage's result, the plant's samples and verdicts.

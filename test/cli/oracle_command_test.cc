@@ -96,6 +96,55 @@ TEST_F(OracleCommandTest, AKilledBuildResumesFromItsCheckpoints) {
   EXPECT_FALSE(fs::exists(parts));
 }
 
+// Periodic gaits walked in the plant (two cells, one timing each): one rank and two write the same bytes, and the
+// header names the source with its settings.
+TEST_F(OracleCommandTest, ThePlantSourceWalksEachCellAndTwoRanksWriteTheSameBytes) {
+  std::ofstream(grid_) << "dx: [0.1, 0.15]\ndy: [0.2]\ndz: [0.0]\ndtheta: [0.0]\nmu: [0.01, 1.0]\n";
+  const fs::path one = dir_ / "one.oracle", two = dir_ / "two.oracle";
+  const std::string plant = "--source plant --t-ds 0.5 --t-sw 1.2";
+  const CairnStreams single = RunCairnStreams(Build(one.string(), plant));
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  EXPECT_THAT(single.out, HasSubstr("\"source\": \"plant\""));
+  EXPECT_THAT(single.out, HasSubstr("\"entries\": 4, \"feasible\": 2"));
+  EXPECT_THAT(single.out, HasSubstr("\"chunks\": 2"));
+  const CairnStreams pair = RunCairnStreams(Build(two.string(), plant), "", kMpirun);
+  ASSERT_EQ(pair.exit_code, 0) << pair.err;
+  const std::string bytes = Slurp(one);
+  EXPECT_THAT(bytes, HasSubstr("\nsource plant t_ds 0.5 t_sw 1.2 steps 6 transient 2 friction 1 "));
+  EXPECT_EQ(Slurp(two), bytes);
+}
+
+// `oracle check` asks the table's own source at held-out steps and writes the comparison; a table is only
+// checked against the source (and grid) it was built from.
+TEST_F(OracleCommandTest, CheckComparesATableWithItsSourceAtHeldOutSteps) {
+  const fs::path table = dir_ / "table.oracle", report = dir_ / "report";
+  ASSERT_EQ(RunCairnStreams(Build(table.string())).exit_code, 0);
+  const std::string check = "oracle check --oracle " + table.string() + " --grid " + grid_ + " --samples 6 --seed 3";
+  const CairnStreams run = RunCairnStreams(check + " --out " + report.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("held out   6 steps (seed 3)"));
+  EXPECT_THAT(run.out, HasSubstr("SMSE "));
+  const std::string json = Slurp(report / "heldout.json");
+  for (const char* key : {"\"source\": \"model\"", "\"samples\": 6", "\"smse\": ", "\"correlation\": ",
+                          "\"steps\": [{\"dx\": "}) {
+    EXPECT_THAT(json, HasSubstr(key));
+  }
+  ASSERT_TRUE(fs::exists(report / "heldout.png"));
+  EXPECT_GT(fs::file_size(report / "heldout.png"), 1000u);
+  // The same seed gives the same bytes.
+  const CairnStreams again = RunCairnStreams(check + " --json");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(again.out, json);
+
+  const CairnStreams other = RunCairnStreams(check + " --objective ecom");
+  EXPECT_EQ(other.exit_code, 1);
+  EXPECT_THAT(other.err, HasSubstr("objective 'ecom_heat', not 'ecom'"));
+  EXPECT_EQ(other.err_lines(), 1) << other.err;
+  const CairnStreams zero = RunCairnStreams("oracle check --oracle " + table.string() + " --samples 0");
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_THAT(zero.err, HasSubstr("--samples '0'"));
+}
+
 TEST_F(OracleCommandTest, BadInputIsOneLine) {
   const std::string out = (dir_ / "x.oracle").string();
   CairnStreams run = RunCairnStreams("oracle");
@@ -104,9 +153,20 @@ TEST_F(OracleCommandTest, BadInputIsOneLine) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.err, HasSubstr("--chunk-cells '0'"));
   EXPECT_EQ(run.err_lines(), 1) << run.err;
-  run = RunCairnStreams(Build(out, "--source plant"));
+  run = RunCairnStreams(Build(out, "--source plants"));
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_THAT(run.err, HasSubstr("--source 'plant' is not one of 'model'"));
+  EXPECT_THAT(run.err, HasSubstr("--source 'plants' is not one of 'model', 'plant'"));
+  run = RunCairnStreams(Build(out, "--t-ds 0.5"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("--t-ds applies to --source plant only"));
+  EXPECT_EQ(run.err_lines(), 1) << run.err;
+  run = RunCairnStreams(Build(out, "--source plant --t-sw 1.2,abc"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("--t-sw 'abc' is not a number"));
+  run = RunCairnStreams(Build(out, "--source plant --t-ds 9"));
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("t_ds value 9 s is outside the walking model's bounds"));
+  EXPECT_EQ(run.err_lines(), 1) << run.err;
   run = RunCairnStreams("oracle build --grid " + (dir_ / "missing.yaml").string() + " --out " + out);
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_THAT(run.err, HasSubstr("--grid"));

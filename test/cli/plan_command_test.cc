@@ -246,4 +246,26 @@ TEST_F(PlanCommandTest, JsonWithoutAPlanHasNullsNotPlaceholders) {
   for (const char* bad : {": -1000", ": nan", ": -nan", ": inf", ": -inf"}) EXPECT_THAT(run.out, Not(HasSubstr(bad)));
 }
 
+// `cairn oracle build --source plant` writes the table `cairn plan --oracle-source plant` loads from its cache (one
+// cell, the default timings: six gaits walked in the plant), and the plan names its source.
+TEST_F(PlanCommandTest, PlansWithThePlantOracleTheOracleCommandBuilt) {
+  const std::string cache = (dir_ / "cache").string();
+  const std::string grid = (dir_ / "grid.yaml").string();
+  std::ofstream(grid) << "dx: [0.1]\ndy: [0.2]\ndz: [0.0]\ndtheta: [0.0]\nmu: [1.0]\n";
+  fs::create_directories(cache);
+  const CairnStreams built = RunCairnStreams("oracle build --source plant --grid " + grid + " --out " + cache +
+                                             "/cairn_humanoid-ecom_heat-plant.oracle --json");
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  const CairnStreams run = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --json --time-limit 5 " +
+                                           "--oracle-source plant --oracle-grid " + grid + " --oracle-cache " + cache);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("Loaded transition oracle"));
+  EXPECT_THAT(run.err, Not(HasSubstr("Building")));
+  EXPECT_THAT(run.out, HasSubstr("\"oracle_source\": \"plant t_ds "));
+  EXPECT_THAT(run.out, HasSubstr(" steps 6 transient 2 friction 1 "));
+  const CairnStreams bad = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --oracle-source plants");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("--oracle-source 'plants' is not one of 'model', 'plant'"));
+}
+
 }  // namespace

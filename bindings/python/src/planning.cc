@@ -28,9 +28,12 @@
 #include "cairn/planning/footstep/plan_footsteps.h"
 #include "cairn/planning/footstep/refine_footstep_plan.h"
 #include "cairn/planning/footstep/terrain_map.h"
-#include "cairn/planning/locomotion/step_cost_model.h"
+#include "cairn/planning/locomotion/model_transition_source.h"
+#include "cairn/planning/locomotion/oracle_held_out_error.h"
 #include "cairn/planning/locomotion/oracle_shard_builder.h"
+#include "cairn/planning/locomotion/step_cost_model.h"
 #include "cairn/planning/locomotion/transition_oracle.h"
+#include "cairn/planning/locomotion/transition_source.h"
 #include "cairn/planning/locomotion/walking_model.h"
 #include "cairn/planning/locomotion/walking_objective.h"
 #include "cairn/planning/scenarios/footstep_scenario.h"
@@ -530,9 +533,25 @@ void DefinePlanning(py::module_ m) {
       .def("Validate", &OracleGrid::Validate, py::arg("reach"), "ValueError naming a bad axis value.")
       .def_static("Load", &OracleGrid::Load, py::arg("path"),
                   "A grid from YAML (dx, dy, dz, dtheta, mu: lists or {from, to, step}).");
+  py::class_<TransitionSource, std::shared_ptr<TransitionSource>>(
+      m, "TransitionSource", "Where an oracle's entries come from: the minimum-cost transitions of one displacement.")
+      .def("name", &TransitionSource::name, "The name written into oracle headers.")
+      .def("settings", &TransitionSource::settings, "The settings the entries depend on, one line.")
+      .def("Describe", &TransitionSource::Describe, "The header's source line: name and settings.")
+      .def("concurrent", &TransitionSource::concurrent, "Whether cells may be computed on several threads.")
+      .def("CellEntries", &TransitionSource::CellEntries, py::arg("model"), py::arg("objective"), py::arg("d"),
+           py::arg("mu"), py::call_guard<py::gil_scoped_release>(),
+           "The TransitionCost of displacement d at each friction limit of mu (increasing), without the GIL.");
+  py::class_<ModelTransitionSource, TransitionSource, std::shared_ptr<ModelTransitionSource>>(
+      m, "ModelTransitionSource", "The analytic source \"model\" (OptimizeTransition), the oracle's default.")
+      .def(py::init<>(), "Default optimiser settings.");
   py::class_<OracleBuildOptions>(m, "OracleBuildOptions", "How an oracle table is built.")
       .def(py::init<>(), "One thread per core.")
-      .def_readwrite("num_threads", &OracleBuildOptions::num_threads, "Worker threads (0: one per core).");
+      .def_readwrite("num_threads", &OracleBuildOptions::num_threads, "Worker threads (0: one per core).")
+      .def_property(
+          "source", [](const OracleBuildOptions& o) { return std::const_pointer_cast<TransitionSource>(o.source); },
+          [](OracleBuildOptions& o, std::shared_ptr<TransitionSource> source) { o.source = std::move(source); },
+          "The TransitionSource (None: the analytic model).");
 
   py::class_<TransitionOracle, StepCostModel, std::shared_ptr<TransitionOracle>>(
       m, "TransitionOracle", "Precomputed minimum-cost transitions over an OracleGrid (microsecond lookups).")
@@ -547,11 +566,12 @@ void DefinePlanning(py::module_ m) {
           "Builds the table (without the GIL).")
       .def_static(
           "Load",
-          [](const std::string& path, const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid) {
-            return std::make_shared<TransitionOracle>(TransitionOracle::Load(path, model, objective, grid));
+          [](const std::string& path, const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
+             const std::shared_ptr<TransitionSource>& source) {
+            return std::make_shared<TransitionOracle>(TransitionOracle::Load(path, model, objective, grid, source.get()));
           },
-          py::arg("path"), py::arg("model"), py::arg("objective"), py::arg("grid"),
-          "Reads a table written by Save and checks it against model, objective and grid.")
+          py::arg("path"), py::arg("model"), py::arg("objective"), py::arg("grid"), py::arg("source") = nullptr,
+          "Reads a table written by Save and checks it against model, objective, grid and source (None: model).")
       .def_static(
           "LoadOrBuild",
           [](const std::string& path, const WalkingModel& model, WalkingObjective objective, const OracleGrid& grid,
@@ -572,11 +592,35 @@ void DefinePlanning(py::module_ m) {
       .def("grid", &TransitionOracle::grid, "The grid.")
       .def("objective", &TransitionOracle::objective, "The objective.")
       .def("robot_name", &TransitionOracle::robot_name, "The robot.")
+      .def("source", &TransitionOracle::source, "The source line the entries came from (\"model\" by default).")
       .def("num_entries", &TransitionOracle::num_entries, "Entries.")
       .def("num_feasible", &TransitionOracle::num_feasible, "Feasible entries.")
       .def("build_seconds", &TransitionOracle::build_seconds, "Build wall time (0 if loaded).")
       .def("Serialize", [](const TransitionOracle& o) { return py::bytes(o.Serialize()); },
            "The bytes Save writes.");
+
+  py::class_<HeldOutSample>(m, "HeldOutSample", "One held-out step: the table's answer and its source's.")
+      .def_readonly("d", &HeldOutSample::d, "The StepDisplacement.")
+      .def_readonly("mu", &HeldOutSample::mu, "The friction limit (one of the grid's).")
+      .def_readonly("predicted", &HeldOutSample::predicted, "The table's TransitionCost.")
+      .def_readonly("measured", &HeldOutSample::measured, "The source's TransitionCost.");
+  py::class_<OracleHeldOutError>(m, "OracleHeldOutError", "How well a table predicts its source between grid values.")
+      .def_readonly("samples", &OracleHeldOutError::samples, "The HeldOutSample list.")
+      .def_readonly("both_feasible", &OracleHeldOutError::both_feasible, "Samples feasible for both.")
+      .def_readonly("only_predicted", &OracleHeldOutError::only_predicted, "Feasible for the table only.")
+      .def_readonly("only_measured", &OracleHeldOutError::only_measured, "Feasible for the source only.")
+      .def_readonly("neither", &OracleHeldOutError::neither, "Feasible for neither.")
+      .def_readonly("smse", &OracleHeldOutError::smse, "Standardised mean squared error of the cost.")
+      .def_readonly("mean_absolute_error", &OracleHeldOutError::mean_absolute_error, "Objective's unit.")
+      .def_readonly("mean_relative_error", &OracleHeldOutError::mean_relative_error, "|pred - meas| / meas.")
+      .def_readonly("correlation", &OracleHeldOutError::correlation, "Pearson's, predicted against measured.");
+  py::class_<OracleHeldOutOptions>(m, "OracleHeldOutOptions", "Options of MeasureOracleHeldOutError.")
+      .def(py::init<>(), "20 samples, seed 1.")
+      .def_readwrite("num_samples", &OracleHeldOutOptions::num_samples, "Held-out steps, [1, 100000].")
+      .def_readwrite("seed", &OracleHeldOutOptions::seed, "Seeds the steps.");
+  m.def("MeasureOracleHeldOutError", &MeasureOracleHeldOutError, py::arg("oracle"), py::arg("source"),
+        py::arg("model"), py::arg("options") = OracleHeldOutOptions(), py::call_guard<py::gil_scoped_release>(),
+        "Held-out steps over the oracle's grid, the table against its source (without the GIL).");
 
   py::class_<OracleShardBuilder::ShardReport>(m, "OracleShardReport", "What OracleShardBuilder.BuildShard did.")
       .def_readonly("computed", &OracleShardBuilder::ShardReport::computed, "Chunks computed.")
@@ -585,9 +629,14 @@ void DefinePlanning(py::module_ m) {
   py::class_<OracleShardBuilder>(m, "OracleShardBuilder",
                                  "A transition oracle built in checkpointed chunks shared by ranks; merges to the "
                                  "bytes of one build.")
-      .def(py::init<const WalkingModel&, WalkingObjective, OracleGrid, std::string, int>(), py::arg("model"),
-           py::arg("objective"), py::arg("grid"), py::arg("checkpoint_folder"), py::arg("cells_per_chunk") = 16,
-           py::keep_alive<1, 2>(), "Keeps the model alive.")
+      .def(py::init([](const WalkingModel& model, WalkingObjective objective, OracleGrid grid, std::string folder,
+                       int cells_per_chunk, std::shared_ptr<TransitionSource> source) {
+             return std::make_unique<OracleShardBuilder>(model, objective, std::move(grid), std::move(folder),
+                                                         cells_per_chunk, std::move(source));
+           }),
+           py::arg("model"), py::arg("objective"), py::arg("grid"), py::arg("checkpoint_folder"),
+           py::arg("cells_per_chunk") = 16, py::arg("source") = nullptr, py::keep_alive<1, 2>(),
+           "Keeps the model alive; source None: the analytic model.")
       .def("num_chunks", &OracleShardBuilder::num_chunks, "Chunks of the build.")
       .def("ChunksOfRank", &OracleShardBuilder::ChunksOfRank, py::arg("rank"), py::arg("num_ranks"),
            "The chunks a rank computes.")

@@ -16,9 +16,13 @@
 #include "cairn/multibody/model.h"
 #include "cairn/planning/stabilization/stabilized_reference_player.h"
 #include "cairn/planning/walk/balance_feedback.h"
+#include "cairn/planning/walk/periodic_gait.h"
+#include "cairn/planning/walk/plant_gait_sampler.h"
+#include "cairn/planning/walk/plant_transition_source.h"
 #include "cairn/planning/walk/scenario_terrain_boxes.h"
 #include "cairn/planning/walk/walk_diagram.h"
 #include "cairn/planning/walk/walk_run.h"
+#include "cairn/planning/walk/walk_step_comparison.h"
 #include "cairn/visualization/motion_html.h"
 
 namespace cairn::python {
@@ -116,7 +120,18 @@ void DefinePlanningWalk(py::module_ m) {
       .def_readwrite("gravity_feedforward", &WalkSetup::gravity_feedforward,
                      "Share of GravityFeedforward's torques added to the PD drive, in [0, 1] (0: none).")
       .def_readwrite("plant_terrain", &WalkSetup::plant_terrain, "The plant's TerrainBoxes (the true world).")
-      .def_readwrite("plant", &WalkSetup::plant, "HumanoidPlantOptions.");
+      .def_readwrite("plant", &WalkSetup::plant, "HumanoidPlantOptions.")
+      .def_property(
+          "refine_model",
+          [](const WalkSetup& w) { return std::const_pointer_cast<WalkingModel>(w.refine_model); },
+          [](WalkSetup& w, std::shared_ptr<WalkingModel> model) { w.refine_model = std::move(model); },
+          "The WalkingModel the plan's step parameters are refined with (SLSQP), or None to keep the table's.")
+      .def_property(
+          "plan", [](const WalkSetup& w) -> py::object { return w.plan ? py::cast(*w.plan) : py::none(); },
+          [](WalkSetup& w, py::object plan) {
+            w.plan = plan.is_none() ? nullptr : std::make_shared<const FootstepPlan>(plan.cast<FootstepPlan>());
+          },
+          "A fixed FootstepPlan to walk instead of planning one (a copy), or None: the FootstepPlanner plans.");
   m.def(
       "WalkSetupFromScenario",
       [](const FootstepScenario& scenario, std::shared_ptr<StepCostModel> cost_model,
@@ -137,7 +152,10 @@ void DefinePlanningWalk(py::module_ m) {
           "The Diagram.")
       .def_property_readonly(
           "footsteps", [](const WalkDiagram& w) { return w.footsteps; }, py::return_value_policy::reference_internal,
-          "The FootstepPlanner.")
+          "The FootstepPlanner (None when the setup walks a fixed plan).")
+      .def_property_readonly(
+          "plan", [](const WalkDiagram& w) { return w.plan; }, py::return_value_policy::reference_internal,
+          "The OutputPort of the plan the trajectory optimizer follows (the planner's, or the fixed plan's source).")
       .def_property_readonly(
           "trajectory", [](const WalkDiagram& w) { return w.trajectory; },
           py::return_value_policy::reference_internal, "The TrajectoryOptimizer.")
@@ -182,7 +200,8 @@ void DefinePlanningWalk(py::module_ m) {
       .def_readonly("left_tangential", &WalkSample::left_tangential, "Left sole's tangential force magnitude, N.")
       .def_readonly("right_tangential", &WalkSample::right_tangential, "Right sole's tangential force magnitude, N.")
       .def_readonly("com_energy", &WalkSample::com_energy, "E_COM so far, J.")
-      .def_readonly("electrical_energy", &WalkSample::electrical_energy, "E_ele so far, J.");
+      .def_readonly("electrical_energy", &WalkSample::electrical_energy, "E_ele so far, J.")
+      .def_readonly("heat", &WalkSample::heat, "E_ele's Joule heat so far, J.");
   py::class_<WalkRecord>(m, "WalkRecord", "Each stage's result, the plant's samples and verdicts.")
       .def_readonly("start", &WalkRecord::start, "WalkStart.")
       .def_readonly("plan", &WalkRecord::plan, "FootstepPlan.")
@@ -199,6 +218,112 @@ void DefinePlanningWalk(py::module_ m) {
         py::call_guard<py::gil_scoped_release>(),
         "Settles the planning chain (InitializeWalk), then simulates the plant to the reference's end plus the "
         "settle time.");
+
+  py::class_<WalkStepComparison>(m, "WalkStepComparison",
+                                 "One planned step's predictions against the plant over its planned window.")
+      .def_readonly("index", &WalkStepComparison::index, "1 for the first step.")
+      .def_readonly("foot", &WalkStepComparison::foot, "The foot that swings.")
+      .def_readonly("start", &WalkStepComparison::start, "Window start, s.")
+      .def_readonly("end", &WalkStepComparison::end, "Window end, s.")
+      .def_readonly("predicted_rcof", &WalkStepComparison::predicted_rcof, "The plan's RCOF.")
+      .def_readonly("measured_rcof", &WalkStepComparison::measured_rcof, "The support sole's RCOF.")
+      .def_readonly("measured_rcof_after_touchdown", &WalkStepComparison::measured_rcof_after_touchdown,
+                    "The same without the landing impact.")
+      .def_readonly("measured_net_rcof", &WalkStepComparison::measured_net_rcof, "Of both soles' net force.")
+      .def_readonly("mu_allowed", &WalkStepComparison::mu_allowed, "Friction the step may use.")
+      .def_readonly("predicted_com_work", &WalkStepComparison::predicted_com_work, "J.")
+      .def_readonly("predicted_heat", &WalkStepComparison::predicted_heat, "J.")
+      .def_readonly("measured_com_energy", &WalkStepComparison::measured_com_energy, "E_COM over the window, J.")
+      .def_readonly("measured_electrical_energy", &WalkStepComparison::measured_electrical_energy,
+                    "E_ele over the window, J.")
+      .def_readonly("measured_heat", &WalkStepComparison::measured_heat, "E_ele's Joule heat over the window, J.")
+      .def_readonly("completed", &WalkStepComparison::completed, "The walk lasted to the window's end.");
+  m.def("CompareWalkSteps", &CompareWalkSteps, py::arg("record"),
+        "Each step of record.plan against the plant (NaN where the walk did not complete the step).");
+  m.def("SoleDistance", &SoleDistance, py::arg("robot"), py::arg("soles"), py::arg("record"), py::arg("stance"),
+        "The larger horizontal distance of the two soles from a stance's footholds at the walk's end, m.");
+
+  py::class_<PeriodicGait>(m, "PeriodicGait", "A symmetric periodic gait: num_steps steps of one displacement and p.")
+      .def(py::init([](const StepDisplacement& d, const StepParameters& p, int num_steps) {
+             return PeriodicGait{d, p, num_steps};
+           }),
+           py::arg("displacement") = StepDisplacement(), py::arg("parameters") = StepParameters(),
+           py::arg("num_steps") = 6, "A gait.")
+      .def_readwrite("displacement", &PeriodicGait::displacement, "StepDisplacement of every step.")
+      .def_readwrite("parameters", &PeriodicGait::parameters, "StepParameters of every step.")
+      .def_readwrite("num_steps", &PeriodicGait::num_steps, "Steps, in [1, 100].");
+  m.def("PeriodicGaitPlan", &PeriodicGaitPlan, py::arg("gait"), py::arg("model"), py::arg("objective"),
+        py::arg("mu_allowed"),
+        "The gait as a FootstepPlan from a start stance that already has its displacement, the right foot first; "
+        "each step carries the analytic model's prediction.");
+  m.def("PeriodicGaitTerrain", &PeriodicGaitTerrain, py::arg("plan"), py::arg("foot_length"), py::arg("foot_width"),
+        py::arg("friction"), py::arg("margin") = 0.01,
+        "The plant's ground of a plan: a level floor, or one tread per foothold when their heights differ.");
+  py::class_<PlantGaitOptions>(m, "PlantGaitOptions", "How PlantGaitSampler walks and measures a gait.")
+      .def(py::init<>(), "Six steps, two transient at each end, friction 1, 5 cm tracking tolerance.")
+      .def_readwrite("num_steps", &PlantGaitOptions::num_steps, "Steps of each gait.")
+      .def_readwrite("transient_steps", &PlantGaitOptions::transient_steps,
+                     "Steps at each end left out of the measurement.")
+      .def_readwrite("ground_friction", &PlantGaitOptions::ground_friction, "Ground friction and mu_allowed.")
+      .def_readwrite("tracking_tolerance", &PlantGaitOptions::tracking_tolerance,
+                     "Largest final sole distance from the plan's last stance, m.")
+      .def_readwrite("settle_time", &PlantGaitOptions::settle_time, "Standing after the reference, s.")
+      .def_readwrite("trajectory", &PlantGaitOptions::trajectory, "TrajectoryOptimizerOptions.")
+      .def_readwrite("stabilizer", &PlantGaitOptions::stabilizer, "StabilizerOptions.")
+      .def_readwrite("feedback", &PlantGaitOptions::feedback, "Close the loop with BalanceFeedback.")
+      .def_readwrite("balance", &PlantGaitOptions::balance, "BalanceFeedbackOptions.")
+      .def_readwrite("plant", &PlantGaitOptions::plant, "HumanoidPlantOptions (empty drives: the walking model's).");
+  py::class_<GaitMeasurement>(m, "GaitMeasurement", "What one periodic gait did in the plant.")
+      .def(py::init<>(), "Not simulated; to build measurements by hand.")
+      .def_readwrite("gait", &GaitMeasurement::gait, "The PeriodicGait.")
+      .def_readwrite("predicted", &GaitMeasurement::predicted, "The analytic model's TransitionCost.")
+      .def_readwrite("simulated", &GaitMeasurement::simulated, "The plant walked.")
+      .def_readwrite("feasible", &GaitMeasurement::feasible, "No fall, soles within the tracking tolerance.")
+      .def_readwrite("reason", &GaitMeasurement::reason, "Why not feasible.")
+      .def_readwrite("measured_steps", &GaitMeasurement::measured_steps, "Steps measured.")
+      .def_readwrite("com_work", &GaitMeasurement::com_work, "Mean E_COM per measured step, J.")
+      .def_readwrite("electrical_energy", &GaitMeasurement::electrical_energy, "Mean E_ele per measured step, J.")
+      .def_readwrite("heat", &GaitMeasurement::heat, "Mean Joule heat per measured step, J.")
+      .def_readwrite("rcof", &GaitMeasurement::rcof, "Largest net-force RCOF of the measured steps.")
+      .def_readwrite("sole_rcof", &GaitMeasurement::sole_rcof, "Largest support-sole RCOF after touchdown.")
+      .def_readwrite("com_height", &GaitMeasurement::com_height, "Mean COM height above the stance, m.")
+      .def_readwrite("slips", &GaitMeasurement::slips, "Slips over the whole walk.")
+      .def_readwrite("final_error", &GaitMeasurement::final_error, "Soles' distance from the plan's end, m.")
+      .def_readwrite("duration", &GaitMeasurement::duration, "Simulated time, s.")
+      .def_readwrite("seconds", &GaitMeasurement::seconds, "WalkSettleTimes (wall time).")
+      .def_readwrite("plant_seconds", &GaitMeasurement::plant_seconds, "Wall time of the plant.");
+  py::class_<PlantGaitSampler, std::shared_ptr<PlantGaitSampler>>(m, "PlantGaitSampler",
+                               "Walks periodic gaits in the physics plant and measures E_COM, RCOF, E_ele, Psi.")
+      .def(py::init([](std::shared_ptr<WalkingModel> walking_model, const multibody::Model& robot,
+                       const multibody::JointPdController& controller, WalkingObjective objective,
+                       PlantGaitOptions options) {
+             return std::make_shared<PlantGaitSampler>(
+                 std::move(walking_model), std::make_shared<const multibody::Model>(robot),
+                 std::make_shared<const multibody::JointPdController>(controller), objective, std::move(options));
+           }),
+           py::arg("walking_model"), py::arg("robot"), py::arg("controller"), py::arg("objective"),
+           py::arg("options") = PlantGaitOptions(), "Keeps copies of the robot and the controller.")
+      .def("Setup", &PlantGaitSampler::Setup, py::arg("gait"), "The WalkSetup of a gait (its fixed plan and ground).")
+      .def("Measure", &PlantGaitSampler::Measure, py::arg("gait"), py::call_guard<py::gil_scoped_release>(),
+           "Walks the gait and measures it.")
+      .def("options", &PlantGaitSampler::options, py::return_value_policy::copy, "The PlantGaitOptions.");
+  py::class_<PlantTransitionSource, TransitionSource, std::shared_ptr<PlantTransitionSource>>(
+      m, "PlantTransitionSource",
+      "The \"plant\" oracle source: per cell, the cheapest periodic gait of a timing grid the plant walked.")
+      .def(py::init<std::shared_ptr<const PlantGaitSampler>, std::vector<double>, std::vector<double>>(),
+           py::arg("sampler"), py::arg("t_ds"), py::arg("t_sw"), "ValueError naming a timing out of bounds.")
+      .def_static("DefaultGrid", &PlantTransitionSource::DefaultGrid, py::arg("model"),
+                  "The reduced level grid the CLI builds by default.")
+      .def_static("DefaultDoubleSupportTimes", &PlantTransitionSource::DefaultDoubleSupportTimes, py::arg("model"),
+                  "The default t_ds axis, s.")
+      .def_static("DefaultSwingTimes", &PlantTransitionSource::DefaultSwingTimes, py::arg("model"),
+                  "The default t_sw axis, s.")
+      .def("t_ds", &PlantTransitionSource::t_ds, "The t_ds axis, s.")
+      .def("t_sw", &PlantTransitionSource::t_sw, "The t_sw axis, s.")
+      .def("MeasureCell", &PlantTransitionSource::MeasureCell, py::arg("d"), py::call_guard<py::gil_scoped_release>(),
+           "The GaitMeasurement of every timing pair for displacement d (t_ds outer).")
+      .def_static("EntriesFrom", &PlantTransitionSource::EntriesFrom, py::arg("measurements"), py::arg("objective"),
+                  py::arg("mu"), "The cheapest feasible measured gait within each friction limit.");
 }
 
 void DefineVisualization(py::module_ m) {

@@ -195,3 +195,35 @@ def test_oracle_built_in_shards_matches_one_build(walking_model, tmp_path):
     assert builder.Merge().Serialize() == whole.Serialize()
     builder.RemoveCheckpoints()
     assert not (tmp_path / "parts").exists()
+
+
+def test_an_oracle_names_its_source_and_the_model_source_is_the_default(walking_model, tmp_path):
+    grid = planning.OracleGrid()
+    grid.dx, grid.dy, grid.dz, grid.dtheta, grid.mu = [0.15], [0.2], [0.0], [0.0], [0.1, 1.0]
+    objective = planning.WalkingObjective.kComWork
+    source = planning.ModelTransitionSource()
+    assert (source.name(), source.Describe(), source.concurrent()) == ("model", "model", True)
+    options = planning.OracleBuildOptions()
+    options.num_threads = 1
+    assert options.source is None
+    default = planning.TransitionOracle.Build(walking_model, objective, grid, options)
+    options.source = source
+    named = planning.TransitionOracle.Build(walking_model, objective, grid, options)
+    assert named.source() == "model" and named.Serialize() == default.Serialize()
+    cell = source.CellEntries(walking_model, objective, planning.StepDisplacement(0.15, 0.2, 0.0, 0.0), grid.mu)
+    assert len(cell) == 2 and cell[1].feasible
+    with pytest.raises(ValueError, match="larger than the one before it"):
+        source.CellEntries(walking_model, objective, planning.StepDisplacement(0.15, 0.2, 0.0, 0.0), [1.0, 0.5])
+    path = str(tmp_path / "model.oracle")
+    named.Save(path)
+    assert planning.TransitionOracle.Load(path, walking_model, objective, grid, source).Serialize() == named.Serialize()
+    builder = planning.OracleShardBuilder(walking_model, objective, grid, str(tmp_path / "parts"), 1, source)
+    builder.BuildShard(0, 1, options)
+    assert builder.Merge().Serialize() == named.Serialize()
+
+    held_out = planning.OracleHeldOutOptions()
+    held_out.num_samples = 3
+    error = planning.MeasureOracleHeldOutError(named, source, walking_model, held_out)
+    assert len(error.samples) == 3
+    assert error.both_feasible + error.only_predicted + error.only_measured + error.neither == 3
+    assert all(s.mu in grid.mu for s in error.samples)

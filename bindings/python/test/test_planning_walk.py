@@ -229,3 +229,84 @@ def test_the_viewer_page_inlines_three_js_and_refuses_a_bad_scene(robot, tmp_pat
     scene.times = [0.5, 0.0]
     with pytest.raises(ValueError, match="comes before the previous frame"):
         viz.MotionHtml(robot, scene)
+
+
+def gait(dx, dz, steps=6):
+    return planning.PeriodicGait(planning.StepDisplacement(dx, 0.2, dz, 0.0), planning.StepParameters(0.5, 1.2, 0.7),
+                                 steps)
+
+
+def test_a_periodic_gait_repeats_its_step_and_closes_side_by_side(walking_model):
+    plan = planning.PeriodicGaitPlan(gait(0.2, 0.0, 4), walking_model, planning.WalkingObjective.kComWork, 0.9)
+    assert [str(s.side).endswith("kRight") for s in plan.steps] == [True, False, True, False, True]
+    assert [s.displacement.dx for s in plan.steps] == [0.2, 0.2, 0.2, 0.2, 0.0]
+    assert all(s.mu_allowed == 0.9 for s in plan.steps)
+    assert plan.steps[-1].pose.x == pytest.approx(plan.steps[-2].pose.x)
+    floor = planning.PeriodicGaitTerrain(plan, 0.24, 0.14, 1.0)
+    assert len(floor) == 1 and floor[0].friction == 1.0
+    stairs = planning.PeriodicGaitPlan(gait(0.3, 0.1, 4), walking_model, planning.WalkingObjective.kComWork, 0.9)
+    assert len(planning.PeriodicGaitTerrain(stairs, 0.24, 0.14, 1.0)) == 2 + len(stairs.steps)
+    steep = planning.PeriodicGaitPlan(gait(0.15, 0.1, 4), walking_model, planning.WalkingObjective.kComWork, 0.9)
+    with pytest.raises(ValueError, match="overlap"):
+        planning.PeriodicGaitTerrain(steep, 0.24, 0.14, 1.0)
+    with pytest.raises(ValueError, match="dx 0.5 m"):
+        planning.PeriodicGaitPlan(gait(0.5, 0.0), walking_model, planning.WalkingObjective.kComWork, 0.9)
+
+
+def test_the_gait_sampler_walks_a_fixed_plan_and_reports_a_gait_without_ground(walking_model, robot):
+    controller = mb.JointPdController.Load(robot, CONTROL)
+    options = planning.PlantGaitOptions()
+    options.num_steps = 1
+    options.transient_steps = 0
+    sampler = planning.PlantGaitSampler(walking_model, robot, controller, planning.WalkingObjective.kComWorkPlusHeat,
+                                        options)
+    assert sampler.options().num_steps == 1
+    setup = sampler.Setup(gait(0.1, 0.0))
+    assert len(setup.plan.steps) == 2
+    walk = planning.BuildWalkDiagram(setup)
+    assert walk.footsteps is None and walk.plan is not None
+    run = planning.WalkRunOptions()
+    run.settle_time = 0.2
+    record = planning.RunWalk(walk, run)
+    assert record.start.ready, record.start.reason
+    assert [s.displacement.dx for s in record.plan.steps] == [0.1, 0.0]
+    steps = planning.CompareWalkSteps(record)
+    assert [s.index for s in steps] == [1, 2]
+    assert not record.fell, record.fall_reason
+    assert all(s.completed for s in steps)
+    assert steps[0].measured_com_energy > 0.0
+    assert planning.SoleDistance(robot, setup.plant.sole_bodies, record, record.plan.StanceAfter(1)) < 0.05
+
+    no_ground = sampler.Measure(gait(0.15, 0.1))
+    assert not no_ground.simulated and not no_ground.feasible
+    assert "no ground for this gait" in no_ground.reason
+    assert np.isnan(no_ground.com_work)
+    setup.plan = None
+    assert setup.plan is None
+
+
+def test_the_plant_source_keeps_the_cheapest_measured_gait_within_each_limit(walking_model, robot):
+    controller = mb.JointPdController.Load(robot, CONTROL)
+    sampler = planning.PlantGaitSampler(walking_model, robot, controller, planning.WalkingObjective.kComWork)
+    source = planning.PlantTransitionSource(sampler, [0.5], [1.2])
+    assert source.name() == "plant" and not source.concurrent()
+    assert source.Describe().startswith("plant t_ds 0.5 t_sw 1.2 steps 6 ")
+    assert source.t_ds() == [0.5] and source.t_sw() == [1.2]
+    grid = planning.PlantTransitionSource.DefaultGrid(walking_model)
+    assert grid.dz == [0.0] and len(grid.dx) == 4
+    assert planning.PlantTransitionSource.DefaultSwingTimes(walking_model) == [0.9, 1.2]
+    with pytest.raises(ValueError, match="t_ds value 9 s is outside"):
+        planning.PlantTransitionSource(sampler, [9.0], [1.2])
+
+    def measured(t_ds, com_work, rcof):
+        m = planning.GaitMeasurement()
+        m.gait.parameters = planning.StepParameters(t_ds, 1.2, 0.7)
+        m.simulated, m.feasible, m.com_work, m.heat, m.rcof = True, True, com_work, 0.0, rcof
+        return m
+
+    entries = planning.PlantTransitionSource.EntriesFrom([measured(0.2, 5.0, 0.3), measured(0.9, 9.0, 0.1)],
+                                                         planning.WalkingObjective.kComWork, [0.05, 0.2, 1.0])
+    assert [e.feasible for e in entries] == [False, True, True]
+    assert [e.cost for e in entries[1:]] == [9.0, 5.0]
+    with pytest.raises(ValueError, match="no squared static torques"):
+        planning.PlantTransitionSource.EntriesFrom([], planning.WalkingObjective.kSquaredTorque, [1.0])

@@ -68,7 +68,12 @@ TEST(HumanoidPlantSystemTest, StandsInADiagramAndReportsItsMeasurements) {
   EXPECT_NEAR(soles[0].normal_force + soles[1].normal_force, model.total_mass() * 9.81, 0.02 * model.total_mass() * 9.81);
   EXPECT_TRUE(plant->GetOutputPort("slips").Eval<std::vector<SlipEvent>>(context).empty());
   const Eigen::VectorXd& energy = plant->GetOutputPort("energy").Eval<Eigen::VectorXd>(context);
+  ASSERT_EQ(energy.size(), 3);
   EXPECT_GT(energy[1], 0.0);
+  // Standing still, E_ele is nearly all Joule heat.
+  EXPECT_GT(energy[2], 0.0);
+  EXPECT_LE(energy[2], energy[1]);
+  EXPECT_GT(energy[2], 0.5 * energy[1]);
   EXPECT_LT(std::abs(plant->GetOutputPort("zmp").Eval<Eigen::VectorXd>(context).y()), 0.08);
   // 1000 updates of 1 ms: the state at t = 1 s is the plant's after 1000 steps.
   EXPECT_EQ(simulator.num_unrestricted_updates(), 1000);

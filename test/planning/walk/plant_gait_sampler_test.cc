@@ -1,0 +1,116 @@
+// The plant's measurement of periodic gaits (thesis 2.3.3): a slow level gait is walked and measured, a longer
+// step of the same timing costs more COM work (thesis Fig. 2.3: energy grows with step length), the measurement
+// repeats exactly, and gaits no ground holds or options out of range are reported.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <cairn/multibody/urdf_parser.h>
+#include <cairn/planning/walk/plant_gait_sampler.h>
+
+#include "../support/shared_oracle.h"
+#include "expect_throws.h"
+#include "test_paths.h"
+
+namespace cairn::planning {
+namespace {
+
+std::shared_ptr<const multibody::Model> Robot() {
+  multibody::UrdfOptions urdf;
+  urdf.floating_base = true;
+  return std::make_shared<const multibody::Model>(
+      multibody::ParseUrdfFile(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid.urdf", urdf));
+}
+
+PlantGaitSampler Sampler(PlantGaitOptions options = PlantGaitOptions()) {
+  const auto robot = Robot();
+  const auto controller = std::make_shared<const multibody::JointPdController>(multibody::JointPdController::Load(
+      *robot, std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_control.yaml"));
+  return PlantGaitSampler(test::SharedWalkingModel(), robot, controller, WalkingObjective::kComWorkPlusHeat,
+                          std::move(options));
+}
+
+PeriodicGait Gait(double dx, double dz) {
+  PeriodicGait gait;
+  gait.displacement = {dx, 0.2, dz, 0.0};
+  gait.parameters = {0.5, 1.2, 0.7};
+  return gait;
+}
+
+TEST(PlantGaitSamplerTest, MeasuresASlowLevelGaitAndALongerStepCostsMore) {
+  const PlantGaitSampler sampler = Sampler();
+  const GaitMeasurement short_steps = sampler.Measure(Gait(0.1, 0.0));
+  ASSERT_TRUE(short_steps.simulated) << short_steps.reason;
+  EXPECT_TRUE(short_steps.feasible) << short_steps.reason;
+  EXPECT_EQ(short_steps.reason, "");
+  EXPECT_EQ(short_steps.measured_steps, 2);
+  EXPECT_EQ(short_steps.gait.num_steps, 6);
+  // 6 steps and the closing one of 1.7 s (the stabiliser's reference adds a last double support), then 1 s of
+  // standing.
+  EXPECT_GE(short_steps.duration, 7 * 1.7 + 1.0);
+  EXPECT_LT(short_steps.duration, 7 * 1.7 + 2.0);
+  EXPECT_GT(short_steps.com_work, 0.0);
+  EXPECT_GT(short_steps.electrical_energy, short_steps.com_work);
+  EXPECT_GT(short_steps.heat, 0.0);
+  EXPECT_LT(short_steps.heat, short_steps.electrical_energy);
+  EXPECT_GT(short_steps.rcof, 0.0);
+  EXPECT_LE(short_steps.rcof, 1.0 + 1e-9);
+  EXPECT_LE(short_steps.final_error, 0.05);
+  EXPECT_GT(short_steps.com_height, 0.6);
+  EXPECT_LT(short_steps.com_height, 0.85);
+  EXPECT_TRUE(short_steps.predicted.feasible);
+
+  const GaitMeasurement longer = sampler.Measure(Gait(0.2, 0.0));
+  ASSERT_TRUE(longer.simulated) << longer.reason;
+  EXPECT_GT(longer.com_work, short_steps.com_work);
+  EXPECT_GT(longer.predicted.com_work, short_steps.predicted.com_work);
+
+  // The plant, the solvers and the ordering are deterministic.
+  const GaitMeasurement again = sampler.Measure(Gait(0.1, 0.0));
+  EXPECT_EQ(again.com_work, short_steps.com_work);
+  EXPECT_EQ(again.electrical_energy, short_steps.electrical_energy);
+  EXPECT_EQ(again.rcof, short_steps.rcof);
+  EXPECT_EQ(again.final_error, short_steps.final_error);
+}
+
+TEST(PlantGaitSamplerTest, AStaircaseNoGroundHoldsIsAResultNotAnError) {
+  const GaitMeasurement m = Sampler().Measure(Gait(0.15, 0.1));
+  EXPECT_FALSE(m.simulated);
+  EXPECT_FALSE(m.feasible);
+  EXPECT_NE(m.reason.find("no ground for this gait"), std::string::npos) << m.reason;
+  EXPECT_TRUE(std::isnan(m.com_work));
+  EXPECT_EQ(m.measured_steps, 0);
+}
+
+TEST(PlantGaitSamplerTest, TheSetupWalksTheFixedPlanOnItsGround) {
+  const PlantGaitSampler sampler = Sampler();
+  const WalkSetup setup = sampler.Setup(Gait(0.3, 0.1));
+  ASSERT_NE(setup.plan, nullptr);
+  EXPECT_EQ(setup.plan->steps.size(), 7u);
+  EXPECT_EQ(setup.plant_terrain.size(), 9u);
+  EXPECT_TRUE(std::isnan(setup.trajectory.ground_height));
+  EXPECT_TRUE(setup.plant.stop_on_fall);
+  EXPECT_FALSE(setup.plant.drives.empty());
+  const WalkDiagram walk = BuildWalkDiagram(setup);
+  EXPECT_EQ(walk.footsteps, nullptr);
+  ASSERT_NE(walk.plan, nullptr);
+  EXPECT_EQ(walk.plan->get_system().get_name(), "footsteps");
+}
+
+TEST(PlantGaitSamplerTest, RejectsOptionsOutOfRange) {
+  PlantGaitOptions options;
+  options.num_steps = 4;
+  CAIRN_EXPECT_THROWS_WITH(Sampler(options), std::invalid_argument, "num_steps 4", "[5, 100]");
+  options = PlantGaitOptions();
+  options.ground_friction = 0.0;
+  CAIRN_EXPECT_THROWS_WITH(Sampler(options), std::invalid_argument, "ground_friction 0");
+  options = PlantGaitOptions();
+  options.tracking_tolerance = 2.0;
+  CAIRN_EXPECT_THROWS_WITH(Sampler(options), std::invalid_argument, "tracking_tolerance 2 m");
+  CAIRN_EXPECT_THROWS_WITH(Sampler().Measure(Gait(0.5, 0.0)), std::invalid_argument, "dx 0.5 m");
+}
+
+}  // namespace
+}  // namespace cairn::planning
