@@ -27,7 +27,7 @@ import cairn.multibody as mb
 import cairn.planning as planning
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-DEFAULT_SCENARIOS = ["flat.yaml", "stairs.yaml", os.path.join("plant", "ice_and_carpet.yaml")]
+DEFAULT_SCENARIOS = ["flat.yaml", "ice_narrow_006.yaml", "stairs.yaml"]
 
 
 def statistics(pairs):
@@ -95,7 +95,7 @@ def walk(scenario_path, oracle, model, robot, controller, plant_priced):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("scenarios", nargs="*", help="scenario YAML files (default: flat, stairs, ice and carpet)")
+    parser.add_argument("scenarios", nargs="*", help="footstep scenario YAML files (default: flat, narrow ice, stairs)")
     parser.add_argument("--oracle", help="a plant oracle file (default: the analytic model's table)")
     parser.add_argument("--t-ds", help="the plant table's double-support times, comma-separated")
     parser.add_argument("--t-sw", help="the plant table's swing times, comma-separated")
@@ -133,6 +133,9 @@ def main():
                  "energy_J": statistics(energy), "rcof": statistics(rcof)}
         report["scenarios"].append(entry)
         e = entry["energy_J"]
+        if not record.start.ready:
+            print(f"{name:>16}: not walked: {record.start.reason}")
+            continue
         print(f"{name:>16}: {len(walked)}/{len(steps)} steps walked{' (fell)' if record.fell else ''}; energy "
               f"mean error {e['mean_error']:.1f} J, |error| {e['mean_absolute_error']:.1f} J, "
               f"correlation {e['correlation']:.2f}")
