@@ -12,6 +12,9 @@
 // steps and a closing step (t_ds 0.5 s, t_sw 1.2 s) planned, optimised, stabilised and walked by PlantGaitSampler,
 // with the stages' shares as counters. Its peer is the thesis' sweep: about 12,600 gaits in "around 2 days" of ODE
 // (2.3.3), 13.7 s per gait.
+//
+// BM_PipelineGait: the same gait as one sample of the `pipeline` source (PlantGaitSampler::MeasurePlanned: planned,
+// optimised and stabilised, not walked), so the two sources' costs per gait are read side by side.
 
 #include <memory>
 #include <string>
@@ -173,12 +176,37 @@ void BM_PlantGait(benchmark::State& state) {
   state.counters["com_work_J"] = m.com_work;
 }
 
+void BM_PipelineGait(benchmark::State& state) {
+  const auto controller = std::make_shared<const multibody::JointPdController>(multibody::JointPdController::Load(
+      *Robot(), std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_control.yaml"));
+  const auto walking_model = std::make_shared<const WalkingModel>(
+      WalkingModel::Load(std::string(CAIRN_SOURCE_DIR) + "/data/robots/cairn_humanoid_walking.yaml"));
+  const PlantGaitSampler sampler(walking_model, Robot(), controller, WalkingObjective::kSquaredTorque);
+  PeriodicGait gait;
+  gait.displacement = {0.1, 0.2, 0.0, 0.0};
+  gait.parameters = {0.5, 1.2, 0.7};
+  GaitMeasurement m;
+  double trajectory = 0.0, stabilizer = 0.0;
+  for (auto _ : state) {
+    m = sampler.MeasurePlanned(gait);
+    trajectory += m.seconds.trajectory;
+    stabilizer += m.seconds.stabilizer;
+  }
+  if (!m.feasible) state.SkipWithError(("the gait was not planned: " + m.reason).c_str());
+  const double n = static_cast<double>(state.iterations());
+  state.counters["trajectory_s"] = trajectory / n;
+  state.counters["stabilizer_s"] = stabilizer / n;
+  state.counters["torque_cost"] = m.torque_cost;
+  state.counters["com_work_J"] = m.com_work;
+}
+
 BENCHMARK_CAPTURE(BM_Stabilize, fft, std::string("fft"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Stabilize, preview, std::string("preview"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Stabilize, none, std::string("none"))->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PlantPlaysTheReference, open_loop, false)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(BM_PlantPlaysTheReference, feedback, true)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_PlantGait)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_PipelineGait)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "oracle_cache.h"
 
 #include <cstdlib>
+#include <stdexcept>
 #include <iostream>
 #include <utility>
 
@@ -28,10 +29,23 @@ std::string DefaultOracleCache() {
 
 std::string DefaultControlYaml() { return DataDirectory() + "/robots/cairn_humanoid_control.yaml"; }
 
-std::shared_ptr<const TransitionSource> PlantOracleSource(const std::shared_ptr<const WalkingModel>& model,
-                                                          const std::string& control_yaml,
-                                                          WalkingObjective objective, std::vector<double> t_ds,
-                                                          std::vector<double> t_sw) {
+std::vector<std::string> OracleSourceNames() {
+  return {TransitionOracle::kSource, PlantTransitionSource::kName, PlantTransitionSource::kPipelineName};
+}
+
+std::shared_ptr<const TransitionSource> OracleSource(const std::string& name,
+                                                     const std::shared_ptr<const WalkingModel>& model,
+                                                     const std::string& control_yaml, WalkingObjective objective,
+                                                     std::vector<double> t_ds, std::vector<double> t_sw) {
+  if (name == TransitionOracle::kSource) return nullptr;
+  PlantTransitionSource::Mode mode;
+  if (name == PlantTransitionSource::kName) {
+    mode = PlantTransitionSource::Mode::kPlant;
+  } else if (name == PlantTransitionSource::kPipelineName) {
+    mode = PlantTransitionSource::Mode::kPipeline;
+  } else {
+    throw std::invalid_argument("unknown oracle source '" + name + "'; use model, plant or pipeline");
+  }
   CheckInputFile("--control", control_yaml, "a joint-controller YAML file");
   multibody::UrdfOptions urdf;
   urdf.floating_base = true;
@@ -41,7 +55,11 @@ std::shared_ptr<const TransitionSource> PlantOracleSource(const std::shared_ptr<
   const auto sampler = std::make_shared<const PlantGaitSampler>(model, robot, controller, objective);
   if (t_ds.empty()) t_ds = PlantTransitionSource::DefaultDoubleSupportTimes(*model);
   if (t_sw.empty()) t_sw = PlantTransitionSource::DefaultSwingTimes(*model);
-  return std::make_shared<const PlantTransitionSource>(sampler, std::move(t_ds), std::move(t_sw));
+  return std::make_shared<const PlantTransitionSource>(sampler, std::move(t_ds), std::move(t_sw), mode);
+}
+
+OracleGrid DefaultOracleGrid(const TransitionSource* source, const WalkingModel& model) {
+  return source == nullptr ? OracleGrid::Default(model) : PlantTransitionSource::DefaultGrid(model);
 }
 
 std::string OracleCachePath(const std::string& cache, const WalkingModel& model, WalkingObjective objective,
@@ -52,41 +70,42 @@ std::string OracleCachePath(const std::string& cache, const WalkingModel& model,
 }
 
 TransitionOracle LoadOrBuildOracle(const std::string& cache, const WalkingModel& model, WalkingObjective objective,
-                                   std::shared_ptr<const TransitionSource> source, OracleGrid grid) {
-  const bool plant = source != nullptr && source->name() == PlantTransitionSource::kName;
-  if (grid.dx.empty()) grid = plant ? PlantTransitionSource::DefaultGrid(model) : OracleGrid::Default(model);
+                                   std::shared_ptr<const TransitionSource> source, std::optional<OracleGrid> grid) {
+  if (!grid) grid = DefaultOracleGrid(source.get(), model);
   const std::string path = OracleCachePath(cache, model, objective, source.get());
+  const std::string task = source == nullptr ? std::string("building the transition oracle")
+                                             : "measuring the " + source->name() + " oracle's gaits";
   OracleBuildOptions build;
   build.source = std::move(source);
-  ProgressBar bar = ProgressBar::ForStderr(plant ? "walking the plant oracle's gaits" : "building the transition oracle");
+  ProgressBar bar = ProgressBar::ForStderr(task);
   build.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
-  return TransitionOracle::LoadOrBuild(path, model, objective, grid, build, &std::cerr);
+  return TransitionOracle::LoadOrBuild(path, model, objective, *grid, build, &std::cerr);
 }
 
-bool OracleChoice::plant() const { return source == PlantTransitionSource::kName; }
+bool OracleChoice::measured() const { return source != TransitionOracle::kSource; }
 
 void AddOracleOptions(CLI::App& app, OracleChoice* choice) {
   app.add_option("--oracle-cache", choice->cache,
                  "Folder caching transition oracles (default $XDG_CACHE_HOME/cairn/oracles)");
   AddChoiceOption(app, "--oracle-source", &choice->source,
-                  "Where the oracle's step costs come from: the analytic walking model, or periodic gaits walked in "
-                  "the physics plant (built once into the cache: minutes; docs/oracle.md; skips the SLSQP "
-                  "refinement, which optimises the analytic model's cost)",
-                  {TransitionOracle::kSource, PlantTransitionSource::kName});
+                  "Where the oracle's step costs come from: the analytic walking model, periodic gaits walked in "
+                  "the physics plant, or the same gaits only optimised and stabilised (pipeline; objectives torque, "
+                  "ecom, time). Gait tables are built once into the cache (minutes; docs/oracle.md) and skip the "
+                  "SLSQP refinement, which optimises the analytic model's cost",
+                  OracleSourceNames());
   app.add_option("--oracle-grid", choice->grid,
                  "Oracle grid YAML (default: the source's default grid; docs/oracle.md)");
 }
 
 TransitionOracle LoadChosenOracle(const OracleChoice& choice, const std::shared_ptr<const WalkingModel>& model,
                                   WalkingObjective objective) {
-  OracleGrid grid;
+  std::optional<OracleGrid> grid;
   if (!choice.grid.empty()) {
     CheckInputFile("--oracle-grid", choice.grid, "an oracle grid YAML file");
     grid = OracleGrid::Load(choice.grid);
   }
   return LoadOrBuildOracle(choice.cache.empty() ? DefaultOracleCache() : choice.cache, *model, objective,
-                           choice.plant() ? PlantOracleSource(model, DefaultControlYaml(), objective) : nullptr,
-                           std::move(grid));
+                           OracleSource(choice.source, model, DefaultControlYaml(), objective), std::move(grid));
 }
 
 }  // namespace cairn::cli

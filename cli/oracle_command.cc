@@ -1,8 +1,8 @@
 // `cairn oracle build`: a transition oracle (the footstep planner's step-cost table) built over a grid, on one
 // process or spread over MPI ranks (`mpirun -np N cairn oracle build ...`), checkpointed in chunks so a killed
 // build resumes where it stopped, and merged into the same bytes whatever the number of ranks. Its entries come
-// from the analytic walking model (`--source model`) or from periodic gaits walked in the physics plant
-// (`--source plant`).
+// from the analytic walking model (`--source model`), from periodic gaits walked in the physics plant
+// (`--source plant`), or from the same gaits optimised and stabilised but not walked (`--source pipeline`).
 //
 // `cairn oracle check`: how well a table predicts its own source between its grid values (held-out steps; the
 // thesis' SMSE), printed and, with --out, written as heldout.json and heldout.png.
@@ -54,7 +54,7 @@ struct TableArguments {
   std::string grid;
   std::string objective = "ecom_heat";
   std::string source = TransitionOracle::kSource;
-  // --source plant only.
+  // --source plant or pipeline only.
   std::string control = DefaultControlYaml();
   std::string t_ds, t_sw;                        // as given
   std::vector<double> t_ds_values, t_sw_values;  // parsed (empty: the source's defaults)
@@ -100,23 +100,26 @@ void AddTableOptions(CLI::App& app, TableArguments* args) {
   app.add_option("--walking", args->walking, "Walking-model YAML")->capture_default_str();
   AddChoiceOption(app, "--objective", &args->objective, "Step objective", WalkingObjectiveNames());
   AddChoiceOption(app, "--source", &args->source,
-                  "Where the entries come from: the analytic walking model, or periodic gaits walked in the physics "
-                  "plant (slow: seconds per gait; default grid for plant: PlantTransitionSource::DefaultGrid, "
-                  "docs/oracle.md)",
-                  {TransitionOracle::kSource, PlantTransitionSource::kName});
+                  "Where the entries come from: the analytic walking model, periodic gaits walked in the physics "
+                  "plant, or the same gaits optimised and stabilised but not walked (pipeline: the whole-body "
+                  "cost; objectives torque, ecom, time). Gaits are slow (seconds each); their default grid is "
+                  "PlantTransitionSource::DefaultGrid (docs/oracle.md)",
+                  OracleSourceNames());
   app.add_option("--t-ds", args->t_ds,
-                 "--source plant: double-support times to try, s, comma-separated (default 0.2,0.5,0.9)");
-  app.add_option("--t-sw", args->t_sw, "--source plant: swing times to try, s, comma-separated (default 0.9,1.2)");
-  app.add_option("--control", args->control, "--source plant: joint-controller YAML")->capture_default_str();
+                 "--source plant|pipeline: double-support times to try, s, comma-separated (default 0.2,0.5,0.9)");
+  app.add_option("--t-sw", args->t_sw,
+                 "--source plant|pipeline: swing times to try, s, comma-separated (default 0.9,1.2)");
+  app.add_option("--control", args->control, "--source plant|pipeline: joint-controller YAML")->capture_default_str();
 }
 
-// In the action, after parsing: the plant's options without --source plant are a mistake, and the timing lists
+// In the action, after parsing: the gait sources' options with --source model are a mistake, and the timing lists
 // are parsed (usage errors, exit 2).
 void FinishTableOptions(const CLI::App& app, TableArguments* args) {
-  if (args->source != PlantTransitionSource::kName) {
+  if (args->source == TransitionOracle::kSource) {
     for (const char* name : {"--t-ds", "--t-sw", "--control"}) {
       if (app.count(name) > 0) {
-        throw UsageError(std::string(name) + " applies to --source plant only; drop it or add --source plant");
+        throw UsageError(std::string(name) +
+                         " applies to --source plant or pipeline only; drop it or add --source plant");
       }
     }
   }
@@ -133,19 +136,15 @@ struct TableInputs {
 };
 
 TableInputs LoadTableInputs(const TableArguments& args) {
-  const bool plant = args.source == PlantTransitionSource::kName;
   CheckInputFile("--walking", args.walking, "a walking-model YAML file");
   if (!args.grid.empty()) CheckInputFile("--grid", args.grid, "an oracle grid YAML file");
   TableInputs inputs;
   inputs.model = std::make_shared<const WalkingModel>(WalkingModel::Load(args.walking));
   inputs.objective = ParseWalkingObjective(args.objective);
-  if (plant) {
-    inputs.source =
-        PlantOracleSource(inputs.model, args.control, inputs.objective, args.t_ds_values, args.t_sw_values);
-  }
-  inputs.grid = !args.grid.empty() ? OracleGrid::Load(args.grid)
-                : plant            ? PlantTransitionSource::DefaultGrid(*inputs.model)
-                                   : OracleGrid::Default(*inputs.model);
+  inputs.source =
+      OracleSource(args.source, inputs.model, args.control, inputs.objective, args.t_ds_values, args.t_sw_values);
+  inputs.grid =
+      !args.grid.empty() ? OracleGrid::Load(args.grid) : DefaultOracleGrid(inputs.source.get(), *inputs.model);
   return inputs;
 }
 
@@ -191,10 +190,10 @@ int RunBuild(const OracleBuildArguments& args) {
     CheckOutputFile("--out", args.out);
     table = LoadTableInputs(args.table);
     const std::string checkpoint = args.checkpoint.empty() ? args.out + ".parts" : args.checkpoint;
-    // A plant cell walks several gaits (seconds each): one cell per chunk spreads them over the ranks and loses
-    // little to a kill.
-    const bool plant = table.source != nullptr;
-    const int chunk_cells = plant && !args.chunk_cells_given ? 1 : args.chunk_cells;
+    // A gait source's cell measures several gaits (seconds each): one cell per chunk spreads them over the ranks
+    // and loses little to a kill.
+    const bool gaits = table.source != nullptr;
+    const int chunk_cells = gaits && !args.chunk_cells_given ? 1 : args.chunk_cells;
     builder = std::make_unique<OracleShardBuilder>(*table.model, table.objective, table.grid, checkpoint,
                                                    chunk_cells, table.source);
     num_chunks = builder->num_chunks();
@@ -327,7 +326,7 @@ void RegisterOracleCommand(CommandRegistry* registry) {
                   build->add_option("--checkpoint", build_args->checkpoint,
                                     "Folder of the chunk checkpoints (default: <out>.parts)");
                   AddNumberOption(*build, "--chunk-cells", &build_args->chunk_cells,
-                                  "Displacement cells per checkpointed chunk (--source plant: default 1)",
+                                  "Displacement cells per checkpointed chunk (--source plant|pipeline: default 1)",
                                   NumberRange::Closed(1, OracleShardBuilder::kMaxCellsPerChunk));
                   AddNumberOption(*build, "--threads", &build_args->threads,
                                   "Worker threads per rank (0: the cores divided among the ranks)",

@@ -186,7 +186,7 @@ int Run(const PlanArguments& args) {
   plan = PlanFootsteps(*terrain, scenario.start(), scenario.goal(), oracle, geometry, options);
   double refine_ms = 0.0;
   // The refinement optimises the analytic model's cost: a plan priced by the plant keeps the plant's timings.
-  if (!args.no_refine && !args.oracle.plant()) {
+  if (!args.no_refine && !args.oracle.measured()) {
     const auto t0 = std::chrono::steady_clock::now();
     RefineFootstepPlan(*model, objective, &plan);
     refine_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

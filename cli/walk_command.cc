@@ -22,7 +22,6 @@
 #include "cairn/common/number_text.h"
 #include "cairn/multibody/data.h"
 #include "cairn/multibody/kinematics.h"
-#include "cairn/multibody/plant/joint_drive.h"
 #include "cairn/multibody/plant/joint_pd_controller.h"
 #include "cairn/multibody/urdf_parser.h"
 #include "cairn/perception/friction/make_material_segmenter.h"
@@ -230,9 +229,8 @@ int Run(const WalkArguments& args) {
   setup.stabilizer.method = args.stabilizer;
   setup.feedback = !args.open_loop;
   // The refinement optimises the analytic model's cost: steps priced by the plant keep the plant's timings.
-  if (args.no_refine || args.oracle.plant()) setup.refine_model = nullptr;
+  if (args.no_refine || args.oracle.measured()) setup.refine_model = nullptr;
   setup.plant.bullet.time_step = args.step;
-  setup.plant.drives = multibody::LoadJointDrives(*robot, walking);
   setup.plant.stop_on_fall = true;
   WalkRunOptions run;
   run.log_period = kLogPeriod;

@@ -15,7 +15,6 @@
 #include <memory>
 #include <string>
 
-#include <cairn/multibody/plant/joint_drive.h>
 #include <cairn/multibody/plant/joint_pd_controller.h>
 #include <cairn/multibody/urdf_parser.h>
 #include <cairn/perception/friction/make_material_segmenter.h>
@@ -57,7 +56,6 @@ int main(int argc, char** argv) {
         multibody::JointPdController::Load(*robot, robots + "cairn_humanoid_control.yaml"));
     planning::WalkSetup walk =
         planning::WalkSetupFromScenario(scenario, oracle, walking, objective, robot, controller);
-    walk.plant.drives = multibody::LoadJointDrives(*robot, robots + "cairn_humanoid_walking.yaml");
 
     // The eyes: a synthetic stereo head camera looking at the scenario's floor, and the perception behind it.
     const planning::SyntheticCamera camera;  // 320x240, 70 degrees, 12 cm baseline, 1.3 m up, pitched 70 degrees

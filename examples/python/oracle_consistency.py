@@ -3,35 +3,37 @@
 
 For each scenario the walk diagram plans footsteps with the oracle, optimises the whole body, stabilises and walks
 the plan in the physics plant (as `cairn walk`); every step that was walked to the end of its planned window gives
-the oracle's predicted energy (E_COM + motor heat) and RCOF against the plant's (E_COM + Joule heat over the
-window, the net-force RCOF). Prints, per scenario and over all, the mean error, the mean absolute error and the
-correlation (issue 21's objective-consistency report), and draws predicted against measured energy.
+the oracle's predicted cost and RCOF against what the pipeline spent: for the `model` and `plant` sources the
+energy E_COM + heat (the plant's E_COM + Joule heat over the window), for the `pipeline` source the whole-body
+optimiser's torque cost of the step's waypoints (every step of the optimised plan, walked or not). RCOF is always
+the plant's net-force RCOF over the walked steps. Prints, per scenario and over all, the mean error, the mean
+absolute error and the correlation (issue 21's objective-consistency report), and draws predicted against measured
+cost.
 
     PYTHONPATH=build/python python3 examples/python/oracle_consistency.py --out build/consistency.png \
-        [--oracle plant.oracle --t-ds 0.5 --t-sw 1.2 --grid grid.yaml] [--json consistency.json] [scenario.yaml ...]
+        [--source plant|pipeline --oracle table.oracle --t-ds 0.5 --t-sw 1.2 --grid grid.yaml] \
+        [--json consistency.json] [scenario.yaml ...]
 
-Without --oracle the analytic model's default table is used (built on the first run, then read from
---oracle-cache); with --oracle, a plant table built by `cairn oracle build --source plant` with the same timings and
-grid. Each walk takes about a minute.
+The `model` source's default table is built on the first run, then read from --oracle-cache; a `plant` or `pipeline`
+table is read from --oracle, built by `cairn oracle build --source plant` (objective ecom_heat) or
+`--source pipeline --objective torque` with the same timings and grid. Each walk takes about a minute.
 """
 
 import argparse
-import json
 import math
 import os
 
 import numpy as np
 
-import cairn
-import cairn.multibody as mb
 import cairn.planning as planning
+from oracle_tables import (ROOT, add_table_arguments, check_table_arguments, load_oracle, load_robot,
+                           write_outputs)
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 DEFAULT_SCENARIOS = ["flat.yaml", "ice_narrow_006.yaml", "stairs.yaml"]
 
 
 def statistics(pairs):
-    """Mean error, mean absolute error and correlation of (predicted, measured) pairs (NaN where undefined)."""
+    """Mean error, mean absolute error, correlation and ranges of (predicted, measured) pairs (NaN where undefined)."""
     if not pairs:
         return {"steps": 0, "mean_error": math.nan, "mean_absolute_error": math.nan, "correlation": math.nan}
     predicted, measured = np.array(pairs).T
@@ -40,54 +42,16 @@ def statistics(pairs):
     if len(pairs) > 1 and np.std(predicted) > 0 and np.std(measured) > 0:
         correlation = float(np.corrcoef(predicted, measured)[0, 1])
     return {"steps": len(pairs), "mean_error": float(error.mean()), "mean_absolute_error": float(abs(error).mean()),
-            "correlation": correlation}
+            "correlation": correlation, "predicted_range": [float(predicted.min()), float(predicted.max())],
+            "measured_range": [float(measured.min()), float(measured.max())]}
 
 
-def finite_or_none(value):
-    """JSON has no NaN: undefined figures are written as null."""
-    if isinstance(value, dict):
-        return {k: finite_or_none(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [finite_or_none(v) for v in value]
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    return value
-
-
-def write_atomically(path, write):
-    """Writes through a temporary file beside `path` and renames it, so a reader never sees half a file."""
-    temporary = f"{path}.tmp.{os.getpid()}"
-    try:
-        write(temporary)
-        os.replace(temporary, path)
-    finally:
-        if os.path.exists(temporary):
-            os.remove(temporary)
-
-
-def load_oracle(args, model, objective, robot, controller):
-    """The analytic default table from the cache, or the plant table of --oracle with its source's settings."""
-    if not args.oracle:
-        os.makedirs(args.oracle_cache, exist_ok=True)
-        path = os.path.join(args.oracle_cache, f"{model.name()}-{planning.to_string(objective)}.oracle")
-        oracle, log = planning.TransitionOracle.LoadOrBuild(path, model, objective, planning.OracleGrid.Default(model))
-        print(log.strip())
-        return oracle
-    sampler = planning.PlantGaitSampler(model, robot, controller, objective)
-    t_ds = [float(v) for v in args.t_ds.split(",")] if args.t_ds else planning.PlantTransitionSource.DefaultDoubleSupportTimes(model)
-    t_sw = [float(v) for v in args.t_sw.split(",")] if args.t_sw else planning.PlantTransitionSource.DefaultSwingTimes(model)
-    source = planning.PlantTransitionSource(sampler, t_ds, t_sw)
-    grid = planning.OracleGrid.Load(args.grid) if args.grid else planning.PlantTransitionSource.DefaultGrid(model)
-    return planning.TransitionOracle.Load(args.oracle, model, objective, grid, source)
-
-
-def walk(scenario_path, oracle, model, robot, controller, plant_priced):
+def walk(scenario_path, oracle, model, objective, robot, controller, measured_source):
     """Walks one scenario; returns its record and its step comparisons."""
     scenario = planning.FootstepScenario.Load(scenario_path)
-    objective = planning.ParseWalkingObjective(scenario.objective())
     setup = planning.WalkSetupFromScenario(scenario, oracle, model, objective, robot, controller)
-    if plant_priced:
-        setup.refine_model = None  # the refinement optimises the analytic model's cost, not the plant's
+    if measured_source:
+        setup.refine_model = None  # the refinement optimises the analytic model's cost, not the table's source's
     diagram = planning.BuildWalkDiagram(setup)
     record = planning.RunWalk(diagram)
     return record, planning.CompareWalkSteps(record)
@@ -96,23 +60,17 @@ def walk(scenario_path, oracle, model, robot, controller, plant_priced):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scenarios", nargs="*", help="footstep scenario YAML files (default: flat, narrow ice, stairs)")
-    parser.add_argument("--oracle", help="a plant oracle file (default: the analytic model's table)")
-    parser.add_argument("--t-ds", help="the plant table's double-support times, comma-separated")
-    parser.add_argument("--t-sw", help="the plant table's swing times, comma-separated")
-    parser.add_argument("--grid", help="the plant table's grid YAML")
-    parser.add_argument("--oracle-cache", default=os.path.join(os.path.expanduser("~"), ".cache", "cairn", "oracles"))
+    add_table_arguments(parser)
     parser.add_argument("--out", default="oracle_consistency.png", help="PNG to write")
     parser.add_argument("--json", help="also write the figures as JSON")
     args = parser.parse_args()
-
-    data = cairn.data_dir() or os.path.join(ROOT, "data")
-    model = planning.WalkingModel.Load(os.path.join(data, "robots", "cairn_humanoid_walking.yaml"))
-    options = mb.UrdfOptions()
-    options.floating_base = True
-    robot = mb.ParseUrdfFile(os.path.join(data, "robots", "cairn_humanoid.urdf"), options)
-    controller = mb.JointPdController.Load(robot, os.path.join(data, "robots", "cairn_humanoid_control.yaml"))
+    check_table_arguments(parser, args)
+    model, robot, controller = load_robot()
     scenarios = args.scenarios or [os.path.join(ROOT, "examples", "scenarios", s) for s in DEFAULT_SCENARIOS]
-    objective = planning.WalkingObjective.kComWorkPlusHeat
+    # The pipeline's table prices the whole-body torque cost; the others the energy the plant spends.
+    torque = args.source == "pipeline"
+    objective = planning.WalkingObjective.kSquaredTorque if torque else planning.WalkingObjective.kComWorkPlusHeat
+    unit = "" if torque else " J"
     oracle = load_oracle(args, model, objective, robot, controller)
     print(f"oracle: {oracle.description()}")
 
@@ -120,9 +78,18 @@ def main():
     energy_all, rcof_all = [], []
     series = []
     for path in scenarios:
-        record, steps = walk(path, oracle, model, robot, controller, bool(args.oracle))
+        record, steps = walk(path, oracle, model, objective, robot, controller, args.source != "model")
         walked = [s for s in steps if s.completed]
-        energy = [(s.predicted_com_work + s.predicted_heat, s.measured_com_energy + s.measured_heat) for s in walked]
+        if torque:
+            # The whole-body cost needs no walk: every step of an optimised plan counts. Step k leaves stance k - 1;
+            # its waypoints are that stance's start and its mid-swing.
+            planned = steps if record.trajectory.found else []
+            energy = [(record.plan.steps[s.index - 1].transition.cost,
+                       sum(w.torque_cost for w in record.trajectory.waypoints if w.stance == s.index - 1))
+                      for s in planned]
+        else:
+            energy = [(s.predicted_com_work + s.predicted_heat, s.measured_com_energy + s.measured_heat)
+                      for s in walked]
         rcof = [(s.predicted_rcof, s.measured_net_rcof) for s in walked]
         energy_all += energy
         rcof_all += rcof
@@ -130,20 +97,24 @@ def main():
         series.append((name, energy))
         entry = {"scenario": name, "planned": record.start.ready, "reason": record.start.reason,
                  "steps": len(steps), "walked_steps": len(walked), "fell": record.fell,
-                 "energy_J": statistics(energy), "rcof": statistics(rcof)}
+                 "cost": statistics(energy), "rcof": statistics(rcof)}
         report["scenarios"].append(entry)
-        e = entry["energy_J"]
+        e = entry["cost"]
         if not record.start.ready:
             print(f"{name:>16}: not walked: {record.start.reason}")
             continue
-        print(f"{name:>16}: {len(walked)}/{len(steps)} steps walked{' (fell)' if record.fell else ''}; energy "
-              f"mean error {e['mean_error']:.1f} J, |error| {e['mean_absolute_error']:.1f} J, "
+        print(f"{name:>16}: {len(walked)}/{len(steps)} steps walked{' (fell)' if record.fell else ''}; "
+              f"{e['steps']} steps compared; cost mean error {e['mean_error']:.3g}{unit}, |error| {e['mean_absolute_error']:.3g}{unit}, "
               f"correlation {e['correlation']:.2f}")
-    report["all"] = {"energy_J": statistics(energy_all), "rcof": statistics(rcof_all)}
-    e, r = report["all"]["energy_J"], report["all"]["rcof"]
-    print(f"{'all':>16}: {e['steps']} steps; energy mean error {e['mean_error']:.1f} J, |error| "
-          f"{e['mean_absolute_error']:.1f} J, correlation {e['correlation']:.2f}; RCOF mean error "
+    report["all"] = {"cost": statistics(energy_all), "rcof": statistics(rcof_all)}
+    report["cost"] = "whole-body torque cost per step" if torque else "E_COM + heat per step, J"
+    e, r = report["all"]["cost"], report["all"]["rcof"]
+    print(f"{'all':>16}: {e['steps']} steps; cost mean error {e['mean_error']:.3g}{unit}, |error| "
+          f"{e['mean_absolute_error']:.3g}{unit}, correlation {e['correlation']:.2f}; RCOF mean error "
           f"{r['mean_error']:.3f}, correlation {r['correlation']:.2f}")
+    if e["steps"]:
+        print(f"{'':>16}  predicted {e['predicted_range'][0]:.3g}-{e['predicted_range'][1]:.3g}{unit}, measured "
+              f"{e['measured_range'][0]:.3g}-{e['measured_range'][1]:.3g}{unit} a step")
 
     import matplotlib
     matplotlib.use("Agg")
@@ -157,23 +128,17 @@ def main():
     if values:
         lo, hi = min(values), max(values)
         ax.plot([lo, hi], [lo, hi], color="grey", linewidth=1, label="perfect prediction")
-    ax.set_xlabel("measured in the plant: E_COM + Joule heat per step (J)")
-    ax.set_ylabel("predicted by the oracle: E_COM + motor heat per step (J)")
-    ax.set_title(f"Oracle consistency ({'plant' if args.oracle else 'model'} table), {e['steps']} steps")
+    if torque:
+        ax.set_xlabel("spent by the whole-body optimiser: torque cost of the step's waypoints")
+        ax.set_ylabel("predicted by the oracle: torque cost per step")
+    else:
+        ax.set_xlabel("measured in the plant: E_COM + Joule heat per step (J)")
+        ax.set_ylabel("predicted by the oracle: E_COM + motor heat per step (J)")
+    ax.set_title(f"Oracle consistency ({args.source} table), {e['steps']} steps")
     ax.legend(loc="upper left", fontsize=8)
     ax.grid(True, linewidth=0.3)
     fig.tight_layout()
-    write_atomically(args.out, lambda path: fig.savefig(path, dpi=110, format="png"))
-    print(f"wrote {args.out}")
-    if args.json:
-        text = json.dumps(finite_or_none(report), indent=1, sort_keys=True) + "\n"
-
-        def write_json(path):
-            with open(path, "w") as f:
-                f.write(text)
-
-        write_atomically(args.json, write_json)
-        print(f"wrote {args.json}")
+    write_outputs(fig, args.out, report, args.json, dpi=110)
 
 
 if __name__ == "__main__":

@@ -14,7 +14,6 @@
 #include <memory>
 #include <string>
 
-#include <cairn/multibody/plant/joint_drive.h>
 #include <cairn/multibody/plant/joint_pd_controller.h>
 #include <cairn/multibody/urdf_parser.h>
 #include <cairn/planning/locomotion/transition_oracle.h>
@@ -47,7 +46,7 @@ int main(int argc, char** argv) {
         "walk-example-oracles/" + walking->name() + "-" + to_string(objective) + ".oracle", *walking, objective,
         planning::OracleGrid::Default(*walking), planning::OracleBuildOptions(), &std::cerr));
 
-    // The body that walks: the humanoid with a floating base, its PD gains and its motors (for E_ele).
+    // The body that walks: the humanoid with a floating base and its PD gains (the setup adds its motors, for E_ele).
     multibody::UrdfOptions urdf;
     urdf.floating_base = true;
     const auto robot = std::make_shared<const multibody::Model>(
@@ -59,7 +58,6 @@ int main(int argc, char** argv) {
     planning::WalkSetup setup =
         planning::WalkSetupFromScenario(scenario, oracle, walking, objective, robot, controller);
     setup.stabilizer.method = "preview";  // or "fft" (the thesis' compensation) or "none"
-    setup.plant.drives = multibody::LoadJointDrives(*robot, robots + "cairn_humanoid_walking.yaml");
     const planning::WalkDiagram walk = planning::BuildWalkDiagram(setup);
     if (dot) {
       std::cout << walk.diagram->GetGraphvizString();

@@ -136,7 +136,8 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
       multibody::Data data(*model);
       w.com = multibody::CenterOfMass(*model, data, w.q);
       w.min_clearance = problem.MinimumClearance(result.x, i);
-      out.report.torque_cost += problem.TorqueCost(result.x, i);
+      w.torque_cost = problem.TorqueCost(result.x, i);
+      out.report.torque_cost += w.torque_cost;
       out.waypoints.push_back(std::move(w));
     }
     if (final_window) break;

@@ -18,6 +18,10 @@ struct WholeBodyWaypoint {
   std::vector<std::string> contacts;  ///< contact frames, e.g. {"l_sole", "r_sole"}
   Eigen::Vector3d com{Eigen::Vector3d::Zero()};  ///< centre of mass in the world
   double min_clearance{0.0};        ///< smallest signed distance from a link not in contact to the environment, m
+  /// The torque term of the cost at this waypoint (thesis eqs. 2.10-2.11): torque_weight times the squared static
+  /// joint torques, each divided by its effort limit (dimensionless). The summand of TrajectorySolveReport::
+  /// torque_cost, so a step's share of the whole-body cost can be read off.
+  double torque_cost{0.0};
 };
 
 /// How a whole-body solve went: failures are results, with the most violated constraint rows by name.

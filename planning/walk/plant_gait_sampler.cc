@@ -7,7 +7,10 @@
 #include <utility>
 
 #include <cairn/common/number_text.h>
+#include <cairn/multibody/center_of_mass.h>
+#include <cairn/multibody/data.h>
 #include <cairn/multibody/plant/joint_drive.h>
+#include <cairn/systems/analysis/simulator.h>
 #include <cairn/planning/walk/walk_run.h>
 #include <cairn/planning/walk/walk_step_comparison.h>
 
@@ -16,6 +19,53 @@ namespace {
 
 void Check(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("PlantGaitSampler: " + what);
+}
+
+// Mean over steps [first, last) of the torque terms of each step's waypoints (step k leaves stance k: its start and
+// its mid-swing); NaN when the trajectory does not reach that far.
+double MeanStepTorqueCost(const WholeBodyTrajectory& trajectory, int first, int last) {
+  double sum = 0.0;
+  int last_stance = -1;
+  for (const WholeBodyWaypoint& w : trajectory.waypoints) {
+    last_stance = std::max(last_stance, w.stance);
+    if (w.stance >= first && w.stance < last) sum += w.torque_cost;
+  }
+  return trajectory.found && last_stance >= last ? sum / (last - first) : std::nan("");
+}
+
+// What both measurements start from: the gait with the options' number of steps, every measured quantity NaN, the
+// analytic model's prediction, the gait's plan and its walk setup. A gait no staircase holds does not exist, which
+// is a result: its `reason` says so and the setup is left empty.
+struct Prepared {
+  GaitMeasurement measurement;
+  FootstepPlan plan;
+  WalkSetup setup;
+};
+
+Prepared Prepare(const PlantGaitSampler& sampler, const PeriodicGait& gait) {
+  const double nan = std::nan("");
+  Prepared out;
+  GaitMeasurement& m = out.measurement;
+  m.gait = gait;
+  m.gait.num_steps = sampler.options().num_steps;
+  m.com_work = m.electrical_energy = m.heat = m.rcof = m.sole_rcof = m.com_height = m.final_error = nan;
+  m.torque_cost = m.support_margin = nan;
+  // The plan first: a gait outside the model's reach or bounds is the caller's error and throws.
+  out.plan = PeriodicGaitPlan(m.gait, sampler.walking_model(), sampler.objective(), sampler.options().ground_friction);
+  m.predicted = out.plan.steps.front().transition;
+  try {
+    out.setup = sampler.Setup(m.gait);
+  } catch (const std::invalid_argument& e) {
+    m.reason = std::string("no ground for this gait: ") + e.what();
+  }
+  return out;
+}
+
+// Start time of each of the plan's steps and the end of the last, s.
+std::vector<double> StepTimes(const FootstepPlan& plan) {
+  std::vector<double> t{0.0};
+  for (const PlannedStep& step : plan.steps) t.push_back(t.back() + step.transition.duration);
+  return t;
 }
 
 }  // namespace
@@ -45,6 +95,8 @@ PlantGaitSampler::PlantGaitSampler(std::shared_ptr<const WalkingModel> walking_m
         "ground_friction " + FormatShort(o.ground_friction) + " must be in (0, 10]");
   Check(o.tracking_tolerance > 0.0 && o.tracking_tolerance <= 1.0,
         "tracking_tolerance " + FormatShort(o.tracking_tolerance) + " m must be in (0, 1]");
+  Check(o.min_support_margin >= -0.1 && o.min_support_margin <= 0.1,
+        "min_support_margin " + FormatShort(o.min_support_margin) + " m must be in [-0.1, 0.1]");
   Check(o.settle_time >= 0.0 && o.settle_time <= 60.0,
         "settle_time " + FormatShort(o.settle_time) + " s must be in [0, 60]");
   options_.plant.stop_on_fall = true;
@@ -76,23 +128,12 @@ WalkSetup PlantGaitSampler::Setup(const PeriodicGait& gait) const {
 
 GaitMeasurement PlantGaitSampler::Measure(const PeriodicGait& gait) const {
   const double nan = std::nan("");
-  GaitMeasurement m;
-  m.gait = gait;
-  m.gait.num_steps = options_.num_steps;
-  m.com_work = m.electrical_energy = m.heat = m.rcof = m.sole_rcof = m.com_height = m.final_error = nan;
-  // The plan first: a gait outside the model's reach or bounds is the caller's error and throws.
-  const FootstepPlan plan = PeriodicGaitPlan(m.gait, *walking_model_, objective_, options_.ground_friction);
-  m.predicted = plan.steps.front().transition;
+  Prepared prepared = Prepare(*this, gait);
+  GaitMeasurement& m = prepared.measurement;
+  if (!m.reason.empty()) return prepared.measurement;
+  const FootstepPlan& plan = prepared.plan;
   const int gait_steps = options_.num_steps;  // the plan's last step is the closing one
-  WalkSetup setup;
-  try {
-    setup = Setup(m.gait);
-  } catch (const std::invalid_argument& e) {
-    // No staircase holds the footholds: the gait does not exist, which is a result.
-    m.reason = std::string("no ground for this gait: ") + e.what();
-    return m;
-  }
-  const WalkDiagram walk = BuildWalkDiagram(setup);
+  const WalkDiagram walk = BuildWalkDiagram(prepared.setup);
   WalkRunOptions run;
   run.settle_time = options_.settle_time;
   const WalkRecord record = RunWalk(walk, run);
@@ -104,6 +145,9 @@ GaitMeasurement PlantGaitSampler::Measure(const PeriodicGait& gait) const {
     return m;
   }
   m.simulated = true;
+  m.torque_cost =
+      MeanStepTorqueCost(record.trajectory, options_.transient_steps, gait_steps - options_.transient_steps);
+  m.support_margin = record.reference.report.min_support_margin_after;
   m.slips = static_cast<int>(record.slips.size());
 
   const std::vector<WalkStepComparison> steps = CompareWalkSteps(record);
@@ -144,6 +188,74 @@ GaitMeasurement PlantGaitSampler::Measure(const PeriodicGait& gait) const {
   } else if (!(m.final_error <= options_.tracking_tolerance)) {
     m.reason = "the soles ended " + FormatShort(m.final_error) + " m from the plan's last stance (tolerance " +
                FormatShort(options_.tracking_tolerance) + " m)";
+  } else {
+    m.feasible = true;
+  }
+  return m;
+}
+
+GaitMeasurement PlantGaitSampler::MeasurePlanned(const PeriodicGait& gait) const {
+  Prepared prepared = Prepare(*this, gait);
+  GaitMeasurement& m = prepared.measurement;
+  if (!m.reason.empty()) return prepared.measurement;
+  const FootstepPlan& plan = prepared.plan;
+  // The walk diagram settled as for a walk, but never stepped: the chain's outputs are the measurement.
+  const WalkDiagram walk = BuildWalkDiagram(prepared.setup);
+  systems::Simulator simulator(*walk.diagram);
+  const WalkStart start = InitializeWalk(walk, &simulator);
+  m.seconds = start.seconds;
+  if (!start.ready) {
+    m.reason = start.reason;
+    return m;
+  }
+  const systems::Context& root = simulator.get_context();
+  const WholeBodyTrajectory& trajectory = walk.trajectory->get_trajectory_output_port().Eval<WholeBodyTrajectory>(
+      walk.diagram->GetSubsystemContext(*walk.trajectory, root));
+  const StabilizedTrajectory& reference = walk.stabilizer->get_reference_output_port().Eval<StabilizedTrajectory>(
+      walk.diagram->GetSubsystemContext(*walk.stabilizer, root));
+  const int first = options_.transient_steps, last = options_.num_steps - options_.transient_steps;
+  m.torque_cost = MeanStepTorqueCost(trajectory, first, last);
+  m.support_margin = reference.report.min_support_margin_after;
+  m.duration = reference.duration();
+
+  // The reference's COM and its net external force m (a - g), by central differences at the reference's period.
+  multibody::Data data(*robot_);
+  std::vector<Eigen::Vector3d> com;
+  com.reserve(reference.q.size());
+  for (const Eigen::VectorXd& q : reference.q) com.push_back(multibody::CenterOfMass(*robot_, data, q));
+  const double h = reference.period, mass = robot_->total_mass();
+  const std::vector<double> t = StepTimes(plan);
+  double com_work = 0.0, rcof = 0.0, height = 0.0;
+  int height_samples = 0;
+  for (int k = first; k < last; ++k) {
+    const Stance stance = plan.StanceAfter(k - 1);
+    const double ground = 0.5 * (stance.left.z + stance.right.z);
+    const auto begin = static_cast<std::size_t>(std::max(1.0, std::ceil(t[static_cast<std::size_t>(k)] / h)));
+    const auto end = static_cast<std::size_t>(std::floor(t[static_cast<std::size_t>(k) + 1] / h));
+    for (std::size_t i = begin; i <= end && i + 1 < com.size(); ++i) {
+      const Eigen::Vector3d v = (com[i + 1] - com[i - 1]) / (2.0 * h);
+      const Eigen::Vector3d a = (com[i + 1] - 2.0 * com[i] + com[i - 1]) / (h * h);
+      const Eigen::Vector3d force = mass * (a - robot_->gravity());
+      com_work += std::abs(v.dot(force)) * h;
+      if (force.z() > 0.0) rcof = std::max(rcof, force.head<2>().norm() / force.z());
+      height += com[i].z() - ground;
+      ++height_samples;
+    }
+  }
+  const double measured_end = t[static_cast<std::size_t>(last)];
+  if (m.duration + 1e-9 >= measured_end && height_samples > 0) {
+    m.measured_steps = last - first;
+    m.com_work = com_work / m.measured_steps;
+    m.rcof = rcof;
+    m.com_height = height / height_samples;
+  }
+  if (!trajectory.found) {
+    m.reason = "the whole-body trajectory was not found: " + trajectory.report.message;
+  } else if (!(m.support_margin >= options_.min_support_margin)) {
+    m.reason = "the stabilised ZMP's least margin inside its support polygon is " + FormatShort(m.support_margin) +
+               " m, below the " + FormatShort(options_.min_support_margin) + " m allowed (min_support_margin)";
+  } else if (m.measured_steps == 0) {
+    m.reason = "the reference ends at " + FormatShort(m.duration) + " s, before the measured steps";
   } else {
     m.feasible = true;
   }

@@ -29,6 +29,9 @@ struct PlantGaitOptions {
   /// The soles must end within this horizontal distance of the plan's last stance for the gait to count as
   /// tracked, m; (0, 1].
   double tracking_tolerance{0.05};
+  /// MeasurePlanned() only: the least distance of the stabilised ZMP inside its support polygon for a feasible gait,
+  /// m; in [-0.1, 0.1] (negative tolerates the stabiliser's residual error).
+  double min_support_margin{0.0};
   /// Standing simulated after the reference ends, so a fall after the last step counts, s; [0, 60].
   double settle_time{1.0};
   /// The chain from plan to plant, as `cairn walk` sets it by default.
@@ -41,8 +44,9 @@ struct PlantGaitOptions {
   multibody::HumanoidPlantOptions plant;
 };
 
-/// What one gait did in the plant. Energies and RCOF are over the measured steps (all but transient_steps at each
-/// end); NaN when the gait was not walked that far.
+/// What one gait did in the plant (PlantGaitSampler::Measure), or what the planning chain made of it
+/// (MeasurePlanned). Energies and RCOF are over the measured steps (all but transient_steps at each end); NaN when
+/// the gait was not walked (planned) that far, and the plant's quantities are NaN for MeasurePlanned.
 struct GaitMeasurement {
   PeriodicGait gait;
   /// The analytic model's step for the same displacement and parameters (its Psi in `feasible`).
@@ -67,6 +71,13 @@ struct GaitMeasurement {
   /// Mean COM height above the mean height of the stance's footholds over the measured steps, m (the whole-body
   /// optimiser chooses the posture, so this is what the walk used, not gait.parameters.com_height).
   double com_height{0.0};
+  /// Mean whole-body cost per measured step: the torque terms (thesis eqs. 2.10-2.11; torques divided by their
+  /// effort limits, so dimensionless) of the step's waypoints, its start in double support and its mid-swing. The
+  /// pipeline oracle's `torque` cost (thesis 2.5.1).
+  double torque_cost{0.0};
+  /// Smallest distance of the stabilised reference's ZMP inside its support polygon over the whole gait, m
+  /// (negative: outside).
+  double support_margin{0.0};
   int slips{0};                   ///< over the whole walk
   /// Larger of the two soles' horizontal distances from the plan's last stance at the end, m.
   double final_error{0.0};
@@ -100,6 +111,17 @@ class PlantGaitSampler {
   /// result (simulated or feasible false, with the reason); throws std::invalid_argument only for a gait outside the
   /// walking model's reach or parameter bounds.
   GaitMeasurement Measure(const PeriodicGait& gait) const;
+
+  /// The planning chain alone, not walked (issue 21's `pipeline` source: what the whole-body optimiser and the
+  /// stabiliser produce for a transition, thesis 2.5.1's oracle for the hierarchical planner): the walk diagram's
+  /// chain is settled as for Measure() and read without simulating. torque_cost comes from the whole-body
+  /// trajectory; com_work, rcof and com_height from the stabilised reference's centre of mass (its net external
+  /// force m (a - g) by central differences: E_COM = integral of |v . F| dt as the plant measures it, RCOF = |F_xy| /
+  /// F_z over the measured steps); electrical_energy, heat, sole_rcof and final_error are NaN and `simulated` is
+  /// false. Feasible: the whole-body trajectory was found and the stabilised ZMP stays inside its support polygon
+  /// by at least options().min_support_margin. (The stabiliser's joint-limit flag is not a criterion: its leg
+  /// inverse kinematics grazes the knee and ankle limits on gaits the plant walks.) Throws as Measure() does.
+  GaitMeasurement MeasurePlanned(const PeriodicGait& gait) const;
 
   const PlantGaitOptions& options() const { return options_; }
   const WalkingModel& walking_model() const { return *walking_model_; }

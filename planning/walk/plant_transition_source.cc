@@ -47,8 +47,8 @@ std::string AxisText(const std::vector<double>& axis) {
 }  // namespace
 
 PlantTransitionSource::PlantTransitionSource(std::shared_ptr<const PlantGaitSampler> sampler,
-                                             std::vector<double> t_ds, std::vector<double> t_sw)
-    : sampler_(std::move(sampler)), t_ds_(std::move(t_ds)), t_sw_(std::move(t_sw)) {
+                                             std::vector<double> t_ds, std::vector<double> t_sw, Mode mode)
+    : sampler_(std::move(sampler)), t_ds_(std::move(t_ds)), t_sw_(std::move(t_sw)), mode_(mode) {
   if (sampler_ == nullptr) throw std::invalid_argument("PlantTransitionSource: the gait sampler is null");
   const WalkingModel& model = sampler_->walking_model();
   CheckTimings(t_ds_, "t_ds", model.parameter_lower().t_ds, model.parameter_upper().t_ds);
@@ -80,7 +80,8 @@ std::string PlantTransitionSource::do_settings() const {
   return "t_ds " + AxisText(t_ds_) + " t_sw " + AxisText(t_sw_) + " steps " + FormatShort(o.num_steps) +
          " transient " + FormatShort(o.transient_steps) + " friction " + FormatExact(o.ground_friction) +
          " tolerance " + FormatExact(o.tracking_tolerance) + " settle " + FormatExact(o.settle_time) + " stabilizer " +
-         o.stabilizer.method + " feedback " + (o.feedback ? "on" : "off");
+         o.stabilizer.method + (mode_ == Mode::kPlant ? std::string(" feedback ") + (o.feedback ? "on" : "off")
+                                                     : " margin " + FormatExact(o.min_support_margin));
 }
 
 std::vector<GaitMeasurement> PlantTransitionSource::MeasureCell(const StepDisplacement& d) const {
@@ -91,7 +92,7 @@ std::vector<GaitMeasurement> PlantTransitionSource::MeasureCell(const StepDispla
       PeriodicGait gait;
       gait.displacement = d;
       gait.parameters = {t_ds, t_sw, com_height_};
-      out.push_back(sampler_->Measure(gait));
+      out.push_back(mode_ == Mode::kPlant ? sampler_->Measure(gait) : sampler_->MeasurePlanned(gait));
     }
   }
   return out;
@@ -99,11 +100,16 @@ std::vector<GaitMeasurement> PlantTransitionSource::MeasureCell(const StepDispla
 
 std::vector<TransitionCost> PlantTransitionSource::EntriesFrom(const std::vector<GaitMeasurement>& measurements,
                                                                WalkingObjective objective,
-                                                               const std::vector<double>& mu) {
-  if (objective == WalkingObjective::kSquaredTorque) {
+                                                               const std::vector<double>& mu, Mode mode) {
+  if (mode == Mode::kPlant && objective == WalkingObjective::kSquaredTorque) {
     throw std::invalid_argument(std::string("PlantTransitionSource: the plant measures no squared static torques "
                                             "(objective '") +
-                                to_string(objective) + "'); use ecom, ecom_heat or time");
+                                to_string(objective) + "'); use ecom, ecom_heat or time, or the pipeline source");
+  }
+  if (mode == Mode::kPipeline && objective == WalkingObjective::kComWorkPlusHeat) {
+    throw std::invalid_argument(std::string("PlantTransitionSource: the pipeline source runs no motors, so it "
+                                            "measures no heat (objective '") +
+                                to_string(objective) + "'); use torque, ecom or time, or the plant source");
   }
   std::vector<TransitionCost> entries(mu.size());
   for (std::size_t k = 0; k < mu.size(); ++k) {
@@ -114,6 +120,7 @@ std::vector<TransitionCost> PlantTransitionSource::EntriesFrom(const std::vector
       switch (objective) {
         case WalkingObjective::kComWork: cost = m.com_work; break;
         case WalkingObjective::kComWorkPlusHeat: cost = m.com_work + m.heat; break;
+        case WalkingObjective::kSquaredTorque: cost = m.torque_cost; break;
         default: cost = p.t_ds + p.t_sw; break;
       }
       if (!std::isfinite(cost) || (entries[k].feasible && !(cost < entries[k].cost))) continue;
@@ -122,7 +129,7 @@ std::vector<TransitionCost> PlantTransitionSource::EntriesFrom(const std::vector
       e.cost = cost;
       e.parameters = {p.t_ds, p.t_sw, m.com_height};
       e.com_work = m.com_work;
-      e.heat = m.heat;
+      e.heat = mode == Mode::kPlant ? m.heat : 0.0;
       e.rcof = m.rcof;
       e.duration = p.t_ds + p.t_sw;
     }
@@ -139,9 +146,9 @@ std::vector<TransitionCost> PlantTransitionSource::DoCellEntries(const WalkingMo
                                 "', but its gait sampler walks '" + sampler_->walking_model().name() +
                                 "' (another walking model); build the source for the oracle's model");
   }
-  // Refused before the first gait is walked.
-  if (objective == WalkingObjective::kSquaredTorque) return EntriesFrom({}, objective, mu);
-  return EntriesFrom(MeasureCell(d), objective, mu);
+  // An objective the mode does not measure is refused before the first gait is measured.
+  EntriesFrom({}, objective, mu, mode_);
+  return EntriesFrom(MeasureCell(d), objective, mu, mode_);
 }
 
 }  // namespace cairn::planning

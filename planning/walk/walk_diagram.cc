@@ -11,6 +11,7 @@
 #include <cairn/multibody/configuration.h>
 #include <cairn/multibody/data.h>
 #include <cairn/multibody/kinematics.h>
+#include <cairn/multibody/plant/joint_drive.h>
 #include <cairn/planning/trajectory/environment_from_obstacles.h>
 #include <cairn/planning/walk/scenario_terrain_boxes.h>
 #include <cairn/systems/framework/diagram_builder.h>
@@ -71,6 +72,11 @@ WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_pt
   setup.robot = std::move(robot);
   setup.controller = std::move(controller);
   setup.plant_terrain = ScenarioTerrainBoxes(scenario);
+  // Without the motors' drives the plant's E_ele and its Joule heat stay 0, and a step's measured energy would
+  // silently leave out the heat its prediction includes.
+  if (setup.robot != nullptr && setup.refine_model != nullptr) {
+    setup.plant.drives = multibody::LoadJointDrives(*setup.robot, setup.refine_model->yaml_path());
+  }
   return setup;
 }
 

@@ -74,8 +74,10 @@ Eigen::VectorXd StandingAtStart(const multibody::Model& robot, const std::vector
 /// A WalkSetup for a footstep scenario: its terrain (FootstepScenario::BuildTerrain), start, goal and planner
 /// settings, its obstacles as the trajectory's environment (EnvironmentFromObstacles) and as the plant's boxes with
 /// its regions (ScenarioTerrainBoxes), the geometry of `walking_model`'s feet and body box, and `walking_model`
-/// refining the plan's steps. The stabiliser's options are WalkingStabilizerOptions("fft") (the thesis' defaults do
-/// not walk in the plant); the trajectory and plant options are the defaults. The caller adjusts them. Throws as those functions do.
+/// refining the plan's steps, and the plant driven by `walking_model`'s motors (LoadJointDrives of its YAML, so the
+/// plant measures E_ele and its Joule heat; with a robot and a walking model). The stabiliser's options are
+/// WalkingStabilizerOptions("fft") (the thesis' defaults do not walk in the plant); the other trajectory and plant
+/// options are the defaults. The caller adjusts them. Throws as those functions do.
 WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_ptr<const StepCostModel> cost_model,
                                 std::shared_ptr<const WalkingModel> walking_model, WalkingObjective objective,
                                 std::shared_ptr<const multibody::Model> robot,

@@ -158,11 +158,15 @@ TEST_F(OracleCommandTest, BadInputIsOneLine) {
   EXPECT_THAT(run.err, HasSubstr("--source 'plants' is not one of 'model', 'plant'"));
   run = RunCairnStreams(Build(out, "--t-ds 0.5"));
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_THAT(run.err, HasSubstr("--t-ds applies to --source plant only"));
+  EXPECT_THAT(run.err, HasSubstr("--t-ds applies to --source plant or pipeline only"));
   EXPECT_EQ(run.err_lines(), 1) << run.err;
   run = RunCairnStreams(Build(out, "--source plant --t-sw 1.2,abc"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.err, HasSubstr("--t-sw 'abc' is not a number"));
+  run = RunCairnStreams(Build(out, "--source pipeline"));  // the default objective, ecom_heat
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_THAT(run.err, HasSubstr("the pipeline source runs no motors, so it measures no heat"));
+  EXPECT_EQ(run.err_lines(), 1) << run.err;
   run = RunCairnStreams(Build(out, "--source plant --t-ds 9"));
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_THAT(run.err, HasSubstr("t_ds value 9 s is outside the walking model's bounds"));

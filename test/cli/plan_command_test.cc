@@ -265,7 +265,26 @@ TEST_F(PlanCommandTest, PlansWithThePlantOracleTheOracleCommandBuilt) {
   EXPECT_THAT(run.out, HasSubstr(" steps 6 transient 2 friction 1 "));
   const CairnStreams bad = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --oracle-source plants");
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_THAT(bad.err, HasSubstr("--oracle-source 'plants' is not one of 'model', 'plant'"));
+  EXPECT_THAT(bad.err, HasSubstr("--oracle-source 'plants' is not one of 'model', 'plant', 'pipeline'"));
+}
+
+// The pipeline source (the whole-body torque cost of each gait, optimised and stabilised but not walked) is built
+// into the cache by `plan` itself on first use, and the plan names it.
+TEST_F(PlanCommandTest, PlansWithThePipelineOracleOnTheWholeBodyTorqueCost) {
+  const std::string cache = (dir_ / "cache").string();
+  const std::string grid = (dir_ / "grid.yaml").string();
+  std::ofstream(grid) << "dx: [0.1]\ndy: [0.2]\ndz: [0.0]\ndtheta: [0.0]\nmu: [1.0]\n";
+  const CairnStreams run = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --json --time-limit 5 " +
+                                           "--objective torque --oracle-source pipeline --oracle-grid " + grid +
+                                           " --oracle-cache " + cache);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("\"oracle_source\": \"pipeline t_ds "));
+  EXPECT_THAT(run.out, HasSubstr(" stabilizer fft margin 0"));
+  EXPECT_TRUE(fs::exists(cache + "/cairn_humanoid-torque-pipeline.oracle"));
+  const CairnStreams heat = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --oracle-source pipeline " +
+                                            "--oracle-grid " + grid + " --oracle-cache " + cache);
+  EXPECT_EQ(heat.exit_code, 1);
+  EXPECT_THAT(heat.err, HasSubstr("measures no heat (objective 'ecom_heat'); use torque, ecom or time"));
 }
 
 }  // namespace

@@ -75,7 +75,10 @@ void DefinePlanningTrajectory(py::module_ m) {
       .def_readonly("q", &WholeBodyWaypoint::q, "Configuration.")
       .def_readonly("contacts", &WholeBodyWaypoint::contacts, "Contact frames.")
       .def_readonly("com", &WholeBodyWaypoint::com, "Centre of mass.")
-      .def_readonly("min_clearance", &WholeBodyWaypoint::min_clearance, "Smallest distance to the environment, m.");
+      .def_readonly("min_clearance", &WholeBodyWaypoint::min_clearance, "Smallest distance to the environment, m.")
+      .def_readonly("torque_cost", &WholeBodyWaypoint::torque_cost,
+                    "The cost's torque term at this waypoint: torques over effort limits, squared (the summands "
+                    "of report.torque_cost).");
 
   py::class_<TrajectorySolveReport>(m, "TrajectorySolveReport", "How the solve went.")
       .def_readonly("success", &TrajectorySolveReport::success, "Converged and feasible.")

@@ -142,7 +142,8 @@ void DefinePlanningWalk(py::module_ m) {
                                      std::make_shared<const multibody::JointPdController>(controller));
       },
       py::arg("scenario"), py::arg("cost_model"), py::arg("walking_model"), py::arg("objective"), py::arg("robot"),
-      py::arg("controller"), "The scenario's walk with its terrain, start, goal, obstacles and plant boxes.");
+      py::arg("controller"),
+      "The scenario's walk with its terrain, start, goal, obstacles, plant boxes and the model's motors.");
   m.def("StandingAtStart", &StandingAtStart, py::arg("robot"), py::arg("sole_bodies"), py::arg("start"),
         "The robot standing at a stance: neutral joints, base over the feet, lowest sole on the ground.");
 
@@ -268,12 +269,15 @@ void DefinePlanningWalk(py::module_ m) {
       .def_readwrite("tracking_tolerance", &PlantGaitOptions::tracking_tolerance,
                      "Largest final sole distance from the plan's last stance, m.")
       .def_readwrite("settle_time", &PlantGaitOptions::settle_time, "Standing after the reference, s.")
+      .def_readwrite("min_support_margin", &PlantGaitOptions::min_support_margin,
+                     "MeasurePlanned: least ZMP margin inside the support polygon for a feasible gait, m.")
       .def_readwrite("trajectory", &PlantGaitOptions::trajectory, "TrajectoryOptimizerOptions.")
       .def_readwrite("stabilizer", &PlantGaitOptions::stabilizer, "StabilizerOptions.")
       .def_readwrite("feedback", &PlantGaitOptions::feedback, "Close the loop with BalanceFeedback.")
       .def_readwrite("balance", &PlantGaitOptions::balance, "BalanceFeedbackOptions.")
       .def_readwrite("plant", &PlantGaitOptions::plant, "HumanoidPlantOptions (empty drives: the walking model's).");
-  py::class_<GaitMeasurement>(m, "GaitMeasurement", "What one periodic gait did in the plant.")
+  py::class_<GaitMeasurement>(m, "GaitMeasurement",
+                              "What one periodic gait did in the plant, or what the planning chain made of it.")
       .def(py::init<>(), "Not simulated; to build measurements by hand.")
       .def_readwrite("gait", &GaitMeasurement::gait, "The PeriodicGait.")
       .def_readwrite("predicted", &GaitMeasurement::predicted, "The analytic model's TransitionCost.")
@@ -287,6 +291,10 @@ void DefinePlanningWalk(py::module_ m) {
       .def_readwrite("rcof", &GaitMeasurement::rcof, "Largest net-force RCOF of the measured steps.")
       .def_readwrite("sole_rcof", &GaitMeasurement::sole_rcof, "Largest support-sole RCOF after touchdown.")
       .def_readwrite("com_height", &GaitMeasurement::com_height, "Mean COM height above the stance, m.")
+      .def_readwrite("torque_cost", &GaitMeasurement::torque_cost,
+                     "Mean whole-body torque cost per measured step (torques over effort limits, squared).")
+      .def_readwrite("support_margin", &GaitMeasurement::support_margin,
+                     "Least ZMP margin of the stabilised reference inside its support polygon, m.")
       .def_readwrite("slips", &GaitMeasurement::slips, "Slips over the whole walk.")
       .def_readwrite("final_error", &GaitMeasurement::final_error, "Soles' distance from the plan's end, m.")
       .def_readwrite("duration", &GaitMeasurement::duration, "Simulated time, s.")
@@ -306,12 +314,23 @@ void DefinePlanningWalk(py::module_ m) {
       .def("Setup", &PlantGaitSampler::Setup, py::arg("gait"), "The WalkSetup of a gait (its fixed plan and ground).")
       .def("Measure", &PlantGaitSampler::Measure, py::arg("gait"), py::call_guard<py::gil_scoped_release>(),
            "Walks the gait and measures it.")
+      .def("MeasurePlanned", &PlantGaitSampler::MeasurePlanned, py::arg("gait"),
+           py::call_guard<py::gil_scoped_release>(),
+           "Optimises and stabilises the gait without walking it and measures the reference (the pipeline source).")
       .def("options", &PlantGaitSampler::options, py::return_value_policy::copy, "The PlantGaitOptions.");
-  py::class_<PlantTransitionSource, TransitionSource, std::shared_ptr<PlantTransitionSource>>(
+  py::class_<PlantTransitionSource, TransitionSource, std::shared_ptr<PlantTransitionSource>> source(
       m, "PlantTransitionSource",
-      "The \"plant\" oracle source: per cell, the cheapest periodic gait of a timing grid the plant walked.")
-      .def(py::init<std::shared_ptr<const PlantGaitSampler>, std::vector<double>, std::vector<double>>(),
-           py::arg("sampler"), py::arg("t_ds"), py::arg("t_sw"), "ValueError naming a timing out of bounds.")
+      "The \"plant\" and \"pipeline\" oracle sources: per cell, the cheapest feasible periodic gait of a timing "
+      "grid, walked in the plant or only planned.");
+  py::enum_<PlantTransitionSource::Mode>(source, "Mode", "Walked in the plant, or the planning chain alone.")
+      .value("kPlant", PlantTransitionSource::Mode::kPlant)
+      .value("kPipeline", PlantTransitionSource::Mode::kPipeline);
+  source
+      .def(py::init<std::shared_ptr<const PlantGaitSampler>, std::vector<double>, std::vector<double>,
+                    PlantTransitionSource::Mode>(),
+           py::arg("sampler"), py::arg("t_ds"), py::arg("t_sw"), py::arg("mode") = PlantTransitionSource::Mode::kPlant,
+           "ValueError naming a timing out of bounds.")
+      .def("mode", &PlantTransitionSource::mode, "Mode.kPlant or Mode.kPipeline.")
       .def_static("DefaultGrid", &PlantTransitionSource::DefaultGrid, py::arg("model"),
                   "The reduced level grid the CLI builds by default.")
       .def_static("DefaultDoubleSupportTimes", &PlantTransitionSource::DefaultDoubleSupportTimes, py::arg("model"),
@@ -323,7 +342,8 @@ void DefinePlanningWalk(py::module_ m) {
       .def("MeasureCell", &PlantTransitionSource::MeasureCell, py::arg("d"), py::call_guard<py::gil_scoped_release>(),
            "The GaitMeasurement of every timing pair for displacement d (t_ds outer).")
       .def_static("EntriesFrom", &PlantTransitionSource::EntriesFrom, py::arg("measurements"), py::arg("objective"),
-                  py::arg("mu"), "The cheapest feasible measured gait within each friction limit.");
+                  py::arg("mu"), py::arg("mode") = PlantTransitionSource::Mode::kPlant,
+                  "The cheapest feasible measured gait within each friction limit.");
 }
 
 void DefineVisualization(py::module_ m) {

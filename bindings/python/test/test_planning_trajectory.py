@@ -48,6 +48,9 @@ def test_the_function_solves_a_step_within_the_constraints(model):
         assert abs(np.linalg.norm(w.q[3:7]) - 1.0) < 1e-9
         assert w.min_clearance > 0.025 - 0.01
     assert 0.0 < trajectory.report.torque_cost <= trajectory.report.objective
+    # The waypoints' torque terms are the report's, split by waypoint (what the pipeline oracle prices steps with).
+    assert all(w.torque_cost > 0.0 for w in trajectory.waypoints)
+    assert sum(w.torque_cost for w in trajectory.waypoints) == pytest.approx(trajectory.report.torque_cost, rel=1e-12)
 
 
 def test_the_waist_orientation_smoothness_option_is_exposed_and_validated(model):

@@ -1,6 +1,7 @@
 """cairn.planning, walk: the walk diagram (footsteps -> whole body -> stabiliser -> player -> plant), its run, the
 scenario's plant boxes, the reference player; cairn.visualization's HTML viewer."""
 
+import math
 import os
 
 import numpy as np
@@ -59,6 +60,8 @@ def test_the_scenario_becomes_one_plant_box_with_its_friction(scenario):
 def test_the_walk_diagram_settles_and_the_plant_walks_the_reference(scenario, oracle, walking_model, robot):
     setup = setup_for(scenario, oracle, walking_model, robot)
     assert setup.stabilizer.contact_timing and setup.stabilizer.method == "fft"
+    # The walking model's motors drive the plant, so it measures the heat the planner's steps predict.
+    assert len(setup.plant.drives) == robot.nv()
     walk = planning.BuildWalkDiagram(setup)
     names = [s.get_name() for s in walk.diagram.GetSystems()]
     assert {"footsteps", "trajectory", "stabilizer", "player", "plant"} <= set(names)
@@ -73,6 +76,7 @@ def test_the_walk_diagram_settles_and_the_plant_walks_the_reference(scenario, or
     assert record.duration <= record.reference.duration() + options.settle_time + 1e-9
     energies = [s.com_energy for s in record.samples]
     assert all(b >= a - 1e-12 for a, b in zip(energies, energies[1:]))
+    assert record.samples[-1].heat > 0.0 and record.samples[-1].electrical_energy > record.samples[-1].heat
     # A sole's tangential force is recorded next to its normal force; an unloaded sole carries neither.
     assert any(s.left_tangential > 0.0 for s in record.samples)
     assert all(s.left_tangential == 0.0 for s in record.samples if s.left_force == 0.0)
@@ -310,3 +314,27 @@ def test_the_plant_source_keeps_the_cheapest_measured_gait_within_each_limit(wal
     assert [e.cost for e in entries[1:]] == [9.0, 5.0]
     with pytest.raises(ValueError, match="no squared static torques"):
         planning.PlantTransitionSource.EntriesFrom([], planning.WalkingObjective.kSquaredTorque, [1.0])
+
+    # The pipeline mode prices the whole-body torque cost and refuses heat, which it does not measure.
+    pipeline = planning.PlantTransitionSource(sampler, [0.5], [1.2], planning.PlantTransitionSource.Mode.kPipeline)
+    assert pipeline.name() == "pipeline" and pipeline.mode() == planning.PlantTransitionSource.Mode.kPipeline
+    cheap, dear = measured(0.2, 5.0, 0.3), measured(0.9, 9.0, 0.1)
+    cheap.torque_cost, dear.torque_cost = 0.2, 0.1
+    entries = planning.PlantTransitionSource.EntriesFrom([cheap, dear], planning.WalkingObjective.kSquaredTorque,
+                                                         [1.0], planning.PlantTransitionSource.Mode.kPipeline)
+    assert entries[0].cost == 0.1 and entries[0].parameters.t_ds == 0.9
+    with pytest.raises(ValueError, match="measures no heat"):
+        planning.PlantTransitionSource.EntriesFrom([], planning.WalkingObjective.kComWorkPlusHeat, [1.0],
+                                                   planning.PlantTransitionSource.Mode.kPipeline)
+
+
+def test_the_pipeline_measurement_plans_and_stabilises_a_gait_without_walking_it(walking_model, robot):
+    controller = mb.JointPdController.Load(robot, CONTROL)
+    sampler = planning.PlantGaitSampler(walking_model, robot, controller, planning.WalkingObjective.kSquaredTorque)
+    m = sampler.MeasurePlanned(gait(0.1, 0.0))
+    assert m.feasible and not m.simulated, m.reason
+    assert m.measured_steps == 2
+    assert m.torque_cost > 0.0 and m.com_work > 0.0 and 0.0 < m.rcof < 0.5
+    assert m.support_margin >= sampler.options().min_support_margin
+    assert 0.6 < m.com_height < 0.85
+    assert math.isnan(m.heat) and math.isnan(m.electrical_energy)

@@ -198,6 +198,13 @@ TEST(OptimizeWholeBodyTrajectoryTest, ARecedingWindowKeepsContinuityAndTheConstr
   ASSERT_TRUE(trajectory.found) << trajectory.report.message;
   EXPECT_EQ(trajectory.report.windows, 3);
   ExpectSolutionHoldsTheConstraints(trajectory, plan, options);
+  // Each waypoint is returned by exactly one window, so the report's torque term is the waypoints' sum.
+  double sum = 0.0;
+  for (const WholeBodyWaypoint& w : trajectory.waypoints) {
+    EXPECT_GT(w.torque_cost, 0.0) << w.label;
+    sum += w.torque_cost;
+  }
+  EXPECT_NEAR(sum, trajectory.report.torque_cost, 1e-12 * trajectory.report.torque_cost);
 }
 
 }  // namespace

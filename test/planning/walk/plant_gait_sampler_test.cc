@@ -1,6 +1,7 @@
 // The plant's measurement of periodic gaits (thesis 2.3.3): a slow level gait is walked and measured, a longer
 // step of the same timing costs more COM work (thesis Fig. 2.3: energy grows with step length), the measurement
-// repeats exactly, and gaits no ground holds or options out of range are reported.
+// repeats exactly, and gaits no ground holds or options out of range are reported. The pipeline measurement (the
+// planning chain without the plant) agrees with the walk on what both see.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -73,6 +74,41 @@ TEST(PlantGaitSamplerTest, MeasuresASlowLevelGaitAndALongerStepCostsMore) {
   EXPECT_EQ(again.electrical_energy, short_steps.electrical_energy);
   EXPECT_EQ(again.rcof, short_steps.rcof);
   EXPECT_EQ(again.final_error, short_steps.final_error);
+
+  // The pipeline source's measurement settles the same chain without walking: the same whole-body trajectory and
+  // reference, so the same torque cost and ZMP margin, and none of the plant's quantities.
+  const GaitMeasurement planned = sampler.MeasurePlanned(Gait(0.1, 0.0));
+  EXPECT_FALSE(planned.simulated);
+  EXPECT_TRUE(planned.feasible) << planned.reason;
+  EXPECT_EQ(planned.measured_steps, 2);
+  EXPECT_GT(short_steps.torque_cost, 0.0);
+  EXPECT_EQ(planned.torque_cost, short_steps.torque_cost);
+  EXPECT_EQ(planned.support_margin, short_steps.support_margin);
+  EXPECT_GT(planned.support_margin, 0.0);
+  EXPECT_TRUE(std::isnan(planned.heat) && std::isnan(planned.electrical_energy) && std::isnan(planned.final_error));
+  // The reference's COM is the one the plant followed: its height within 5 cm of the walk's, its RCOF a friction
+  // coefficient a level walk needs (between the analytic model's and the plant's, both well under 1).
+  EXPECT_NEAR(planned.com_height, short_steps.com_height, 0.05);
+  EXPECT_GT(planned.rcof, 0.0);
+  EXPECT_LT(planned.rcof, 0.5);
+  EXPECT_GT(planned.com_work, 0.0);
+  EXPECT_GE(planned.duration, 7 * 1.7) << "the reference's length: the 6 steps and the closing one";
+  EXPECT_LT(planned.duration, short_steps.duration) << "no standing after it";
+}
+
+TEST(PlantGaitSamplerTest, ThePipelineMeasurementTellsAGaitOutsideTheZmpMarginAndOneWithoutGround) {
+  PlantGaitOptions options;
+  options.min_support_margin = 0.1;  // more than half a foot's width: no stabilised ZMP stays that far inside
+  const GaitMeasurement m = Sampler(options).MeasurePlanned(Gait(0.1, 0.0));
+  EXPECT_FALSE(m.feasible);
+  EXPECT_GT(m.torque_cost, 0.0) << "measured, only not feasible";
+  EXPECT_NE(m.reason.find("least margin inside its support polygon is"), std::string::npos) << m.reason;
+  EXPECT_NE(m.reason.find("below the 0.1 m allowed"), std::string::npos) << m.reason;
+
+  const GaitMeasurement none = Sampler().MeasurePlanned(Gait(0.15, 0.1));
+  EXPECT_FALSE(none.feasible);
+  EXPECT_NE(none.reason.find("no ground for this gait"), std::string::npos) << none.reason;
+  EXPECT_TRUE(std::isnan(none.torque_cost));
 }
 
 TEST(PlantGaitSamplerTest, AStaircaseNoGroundHoldsIsAResultNotAnError) {
@@ -109,6 +145,9 @@ TEST(PlantGaitSamplerTest, RejectsOptionsOutOfRange) {
   options = PlantGaitOptions();
   options.tracking_tolerance = 2.0;
   CAIRN_EXPECT_THROWS_WITH(Sampler(options), std::invalid_argument, "tracking_tolerance 2 m");
+  options = PlantGaitOptions();
+  options.min_support_margin = -0.5;
+  CAIRN_EXPECT_THROWS_WITH(Sampler(options), std::invalid_argument, "min_support_margin -0.5 m", "[-0.1, 0.1]");
   CAIRN_EXPECT_THROWS_WITH(Sampler().Measure(Gait(0.5, 0.0)), std::invalid_argument, "dx 0.5 m");
 }
 

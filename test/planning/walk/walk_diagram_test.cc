@@ -107,6 +107,10 @@ TEST(WalkDiagramTest, RunWalkRecordsAConsistentRun) {
     previous = s.com_energy;
     EXPECT_GE(s.electrical_energy, 0.0);
   }
+  // The scenario's setup drives the plant with the walking model's motors, so the heat its steps' predictions
+  // include is measured too.
+  EXPECT_GT(record.samples.back().heat, 0.0);
+  EXPECT_GT(record.samples.back().electrical_energy, record.samples.back().heat);
 }
 
 // Where each sole ended against a stance, m: the larger of the two horizontal distances.
