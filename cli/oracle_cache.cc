@@ -1,5 +1,6 @@
 #include "oracle_cache.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 #include <iostream>
@@ -82,7 +83,17 @@ TransitionOracle LoadOrBuildOracle(const std::string& cache, const WalkingModel&
   return TransitionOracle::LoadOrBuild(path, model, objective, *grid, build, &std::cerr);
 }
 
-bool OracleChoice::measured() const { return source != TransitionOracle::kSource; }
+void OracleChoice::Resolve(const FootstepScenario& scenario) {
+  if (!source.empty()) return;
+  const std::vector<std::string> names = OracleSourceNames();
+  if (std::find(names.begin(), names.end(), scenario.oracle()) == names.end()) {
+    throw std::invalid_argument("scenario " + scenario.path() + ": oracle '" + scenario.oracle() +
+                                "' is not one of model, plant, pipeline");
+  }
+  source = scenario.oracle();
+}
+
+bool OracleChoice::measured() const { return !source.empty() && source != TransitionOracle::kSource; }
 
 void AddOracleOptions(CLI::App& app, OracleChoice* choice) {
   app.add_option("--oracle-cache", choice->cache,
@@ -91,7 +102,8 @@ void AddOracleOptions(CLI::App& app, OracleChoice* choice) {
                   "Where the oracle's step costs come from: the analytic walking model, periodic gaits walked in "
                   "the physics plant, or the same gaits only optimised and stabilised (pipeline; objectives torque, "
                   "ecom, time). Gait tables are built once into the cache (minutes; docs/oracle.md) and skip the "
-                  "SLSQP refinement, which optimises the analytic model's cost",
+                  "SLSQP refinement, which optimises the analytic model's cost. Default: the scenario's `oracle:`, "
+                  "else model",
                   OracleSourceNames());
   app.add_option("--oracle-grid", choice->grid,
                  "Oracle grid YAML (default: the source's default grid; docs/oracle.md)");
@@ -105,7 +117,9 @@ TransitionOracle LoadChosenOracle(const OracleChoice& choice, const std::shared_
     grid = OracleGrid::Load(choice.grid);
   }
   return LoadOrBuildOracle(choice.cache.empty() ? DefaultOracleCache() : choice.cache, *model, objective,
-                           OracleSource(choice.source, model, DefaultControlYaml(), objective), std::move(grid));
+                           OracleSource(choice.source.empty() ? TransitionOracle::kSource : choice.source, model,
+                                        DefaultControlYaml(), objective),
+                           std::move(grid));
 }
 
 }  // namespace cairn::cli

@@ -11,6 +11,7 @@
 #include "cairn/planning/locomotion/transition_source.h"
 #include "cairn/planning/locomotion/walking_model.h"
 #include "cairn/planning/locomotion/walking_objective.h"
+#include "cairn/planning/scenarios/footstep_scenario.h"
 
 namespace cairn::cli {
 
@@ -52,9 +53,13 @@ planning::TransitionOracle LoadOrBuildOracle(const std::string& cache, const pla
 
 /// Which oracle a planning command uses: `--oracle-cache`, `--oracle-source`, `--oracle-grid` (plan, walk, run).
 struct OracleChoice {
-  std::string cache;            ///< "" : DefaultOracleCache()
-  std::string source{"model"};  ///< one of OracleSourceNames()
-  std::string grid;             ///< grid YAML; "": the source's default grid
+  std::string cache;   ///< "" : DefaultOracleCache()
+  std::string source;  ///< one of OracleSourceNames(); "": not given (the scenario's, else the analytic model)
+  std::string grid;    ///< grid YAML; "": the source's default grid
+
+  /// Takes the scenario's `oracle:` when --oracle-source was not given. Throws std::invalid_argument naming the
+  /// scenario's file when its source is not one of OracleSourceNames().
+  void Resolve(const planning::FootstepScenario& scenario);
 
   /// The source measures gaits ("plant", "pipeline") rather than evaluating the analytic model, so the SLSQP
   /// refinement, which optimises the analytic cost, does not apply to its plans.

@@ -117,6 +117,8 @@ int Run(const PlanArguments& args) {
   CheckInputFile("--scenario", args.scenario, "a scenario YAML file");
   if (!args.oracle.grid.empty()) CheckInputFile("--oracle-grid", args.oracle.grid, "an oracle grid YAML file");
   FootstepScenario scenario = FootstepScenario::Load(args.scenario);
+  OracleChoice oracle_choice = args.oracle;
+  oracle_choice.Resolve(scenario);
   const WalkingObjective objective =
       ParseWalkingObjective(args.objective.empty() ? scenario.objective() : args.objective);
   FootstepPlannerOptions options = scenario.planner();
@@ -176,7 +178,7 @@ int Run(const PlanArguments& args) {
                                 : scenario.robot();
   CheckInputFile("the scenario's robot", robot, "a walking-model YAML file");
   const auto model = std::make_shared<const WalkingModel>(WalkingModel::Load(robot));
-  const TransitionOracle oracle = LoadChosenOracle(args.oracle, model, objective);
+  const TransitionOracle oracle = LoadChosenOracle(oracle_choice, model, objective);
 
   BipedGeometry geometry;
   geometry.foot_length = model->foot_length();
@@ -186,7 +188,7 @@ int Run(const PlanArguments& args) {
   plan = PlanFootsteps(*terrain, scenario.start(), scenario.goal(), oracle, geometry, options);
   double refine_ms = 0.0;
   // The refinement optimises the analytic model's cost: a plan priced by the plant keeps the plant's timings.
-  if (!args.no_refine && !args.oracle.measured()) {
+  if (!args.no_refine && !oracle_choice.measured()) {
     const auto t0 = std::chrono::steady_clock::now();
     RefineFootstepPlan(*model, objective, &plan);
     refine_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

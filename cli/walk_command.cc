@@ -202,6 +202,8 @@ std::string WalkJson(const FootstepScenario& scenario, const std::string& object
 int Run(const WalkArguments& args) {
   CheckInputFile("--scenario", args.scenario, "a scenario YAML file");
   const FootstepScenario scenario = FootstepScenario::Load(args.scenario);
+  OracleChoice oracle_choice = args.oracle;
+  oracle_choice.Resolve(scenario);
   // Before the oracle is loaded (or built): a scenario the camera cannot see fails now.
   if (args.perceive) ScenarioStereoScene(scenario);
   const std::string objective_name = args.objective.empty() ? scenario.objective() : args.objective;
@@ -218,7 +220,7 @@ int Run(const WalkArguments& args) {
   const std::string control = DataDirectory() + "/robots/cairn_humanoid_control.yaml";
   const auto walking_model = std::make_shared<const WalkingModel>(WalkingModel::Load(walking));
   const auto oracle =
-      std::make_shared<const TransitionOracle>(LoadChosenOracle(args.oracle, walking_model, objective));
+      std::make_shared<const TransitionOracle>(LoadChosenOracle(oracle_choice, walking_model, objective));
   multibody::UrdfOptions urdf;
   urdf.floating_base = true;
   const auto robot = std::make_shared<const multibody::Model>(multibody::ParseUrdfFile(urdf_path, urdf));
@@ -229,7 +231,7 @@ int Run(const WalkArguments& args) {
   setup.stabilizer.method = args.stabilizer;
   setup.feedback = !args.open_loop;
   // The refinement optimises the analytic model's cost: steps priced by the plant keep the plant's timings.
-  if (args.no_refine || args.oracle.measured()) setup.refine_model = nullptr;
+  if (args.no_refine || oracle_choice.measured()) setup.refine_model = nullptr;
   setup.plant.bullet.time_step = args.step;
   setup.plant.stop_on_fall = true;
   WalkRunOptions run;

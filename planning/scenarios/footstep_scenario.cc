@@ -160,14 +160,15 @@ bool FootstepScenario::Region::Contains(const Eigen::Vector2d& p) const {
 FootstepScenario FootstepScenario::Load(const std::string& path) {
   const YamlReader yaml(path, kMaxFileBytes);
   const YAML::Node& root = yaml.root();
-  yaml.CheckKeys(root, {"name", "robot", "objective", "eta", "materials", "terrain", "obstacles", "start", "goal",
-                        "planner"},
+  yaml.CheckKeys(root, {"name", "robot", "objective", "oracle", "eta", "materials", "terrain", "obstacles", "start",
+                        "goal", "planner"},
                  "the scenario");
   FootstepScenario s;
   s.path_ = path;
   s.name_ = yaml.String(root, "name", "the scenario", path);
   if (root["robot"]) s.robot_ = yaml.Resolve(yaml.AsString(root["robot"], "robot"));
   s.objective_ = yaml.String(root, "objective", "the scenario", s.objective_);
+  s.oracle_ = yaml.String(root, "oracle", "the scenario", s.oracle_);
   s.eta_ = yaml.Number(root, "eta", "the scenario", s.eta_);
   if (!(s.eta_ > 0.0 && s.eta_ < 1.0)) {
     throw yaml.Error(root["eta"], "eta must be in (0, 1) (the probability that a foothold's friction is at least "

@@ -16,8 +16,8 @@
 namespace cairn::planning {
 
 /// A footstep planning problem read from YAML (schema: docs/scenarios.md): terrain regions with heights, slopes
-/// and friction distributions, box obstacles, start and goal stances, the robot, the objective, η and the
-/// planner's settings. Errors name the file, the line and the key.
+/// and friction distributions, box obstacles, start and goal stances, the robot, the objective and the oracle's
+/// source, η and the planner's settings. Errors name the file, the line and the key.
 class FootstepScenario {
  public:
   /// A patch of ground: a polygon (a box is a 4-gon) carrying a plane and a friction distribution.
@@ -72,6 +72,9 @@ class FootstepScenario {
   const std::string& robot() const { return robot_; }
   /// "ecom", "ecom_heat", "time" or "torque" (checked by the caller that owns the objectives).
   const std::string& objective() const { return objective_; }
+  /// Where the transition oracle's step costs come from: "model" (the default), "plant" or "pipeline" (checked by
+  /// the caller that owns the sources, as the objective); a command's --oracle-source overrides it.
+  const std::string& oracle() const { return oracle_; }
   double eta() const { return eta_; }
   const std::vector<Region>& regions() const { return regions_; }
   /// The material registry `material:` regions were read with (`materials:`, default thesis Table 3.3): what a
@@ -101,6 +104,7 @@ class FootstepScenario {
   std::string name_;
   std::string robot_;
   std::string objective_{"ecom_heat"};
+  std::string oracle_{"model"};
   double eta_{0.95};
   Eigen::Vector2d min_corner_{Eigen::Vector2d::Zero()};
   Eigen::Vector2d max_corner_{Eigen::Vector2d::Zero()};

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -268,15 +269,24 @@ TEST_F(PlanCommandTest, PlansWithThePlantOracleTheOracleCommandBuilt) {
   EXPECT_THAT(bad.err, HasSubstr("--oracle-source 'plants' is not one of 'model', 'plant', 'pipeline'"));
 }
 
-// The pipeline source (the whole-body torque cost of each gait, optimised and stabilised but not walked) is built
-// into the cache by `plan` itself on first use, and the plan names it.
+// A scenario that names the pipeline source (the whole-body torque cost of each gait, optimised and stabilised but
+// not walked) gets its table built into the cache by `plan` itself on first use, and the plan names it.
 TEST_F(PlanCommandTest, PlansWithThePipelineOracleOnTheWholeBodyTorqueCost) {
   const std::string cache = (dir_ / "cache").string();
   const std::string grid = (dir_ / "grid.yaml").string();
   std::ofstream(grid) << "dx: [0.1]\ndy: [0.2]\ndz: [0.0]\ndtheta: [0.0]\nmu: [1.0]\n";
-  const CairnStreams run = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --json --time-limit 5 " +
-                                           "--objective torque --oracle-source pipeline --oracle-grid " + grid +
-                                           " --oracle-cache " + cache);
+  const std::string scenario = (dir_ / "pipeline.yaml").string();
+  std::string text;
+  {
+    std::ifstream flat(kScenarios + "flat.yaml");
+    text.assign(std::istreambuf_iterator<char>(flat), std::istreambuf_iterator<char>());
+  }
+  const std::string objective_line = "objective: ecom_heat\n";
+  ASSERT_NE(text.find(objective_line), std::string::npos);
+  std::ofstream(scenario) << std::string(text).replace(text.find(objective_line), objective_line.size(),
+                                                        "objective: torque\noracle: pipeline\n");
+  const CairnStreams run = RunCairnStreams("plan --scenario " + scenario + " --json --time-limit 5 --oracle-grid " +
+                                           grid + " --oracle-cache " + cache);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("\"oracle_source\": \"pipeline t_ds "));
   EXPECT_THAT(run.out, HasSubstr(" stabilizer fft margin 0"));
@@ -285,6 +295,14 @@ TEST_F(PlanCommandTest, PlansWithThePipelineOracleOnTheWholeBodyTorqueCost) {
                                             "--oracle-grid " + grid + " --oracle-cache " + cache);
   EXPECT_EQ(heat.exit_code, 1);
   EXPECT_THAT(heat.err, HasSubstr("measures no heat (objective 'ecom_heat'); use torque, ecom or time"));
+
+  std::ofstream(scenario) << std::string(text).replace(text.find(objective_line), objective_line.size(),
+                                                        "oracle: plants\n");
+  const CairnStreams bad = RunCairnStreams("plan --scenario " + scenario);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_THAT(bad.err, HasSubstr("oracle 'plants' is not one of model, plant, pipeline"));
+  EXPECT_THAT(bad.err, HasSubstr(scenario));
+  EXPECT_EQ(bad.err_lines(), 1) << bad.err;
 }
 
 }  // namespace

@@ -714,6 +714,7 @@ void DefinePlanning(py::module_ m) {
       .def("name", &FootstepScenario::name, "Name.")
       .def("robot", &FootstepScenario::robot, "Walking-model YAML (empty: the default robot).")
       .def("objective", &FootstepScenario::objective, "Objective name.")
+      .def("oracle", &FootstepScenario::oracle, "The oracle's source: \"model\", \"plant\" or \"pipeline\".")
       .def("set_objective", &FootstepScenario::set_objective, py::arg("objective"), "Sets the objective name.")
       .def("eta", &FootstepScenario::eta, "Chance-constraint confidence.")
       .def("regions", &FootstepScenario::regions, "Terrain regions.")

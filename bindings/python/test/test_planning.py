@@ -22,6 +22,9 @@ def budgeted(options, expansions=20000):
 def test_scenario_and_terrain():
     scenario = planning.FootstepScenario.Load(ICE)
     assert scenario.name() == "narrow ice, mu 0.12"
+    assert scenario.oracle() == "model"
+    priced_by_plant = planning.FootstepScenario.Load(source_path("examples", "scenarios", "flat_plant_oracle.yaml"))
+    assert priced_by_plant.oracle() == "plant"
     assert [r.name for r in scenario.regions()] == ["ground", "ice"]
     terrain = scenario.BuildTerrain()
     col, row = terrain.CellAt(1.5, 0.0)

@@ -38,9 +38,11 @@ goal: {left: [1.5, 0.1, 0], right: [1.5, -0.1, 0]}
 
 TEST(FootstepScenarioTest, LoadsEveryExampleScenario) {
   for (const char* name : {"flat", "ice_narrow_012", "ice_narrow_006", "ice_wide_006", "stairs", "slope_10",
-                           "slope_20", "slope_25"}) {
+                           "slope_20", "slope_25", "flat_plant_oracle"}) {
     const FootstepScenario scenario = FootstepScenario::Load(kScenarios + name + ".yaml");
     EXPECT_FALSE(scenario.name().empty()) << name;
+    // Every scenario prices its steps with the analytic model unless it names another source.
+    EXPECT_EQ(scenario.oracle(), std::string(name) == "flat_plant_oracle" ? "plant" : "model") << name;
     const TerrainMap terrain = scenario.BuildTerrain();
     EXPECT_GT(terrain.cols() * terrain.rows(), 10000) << name;
   }
