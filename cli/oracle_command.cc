@@ -235,10 +235,13 @@ int RunBuild(const OracleBuildArguments& args) {
 
 bool IsCheckOutput(const std::string& name) { return name == "heldout.json" || name == "heldout.png"; }
 
-std::string ObjectiveUnit(WalkingObjective objective) {
+// The unit of a table's cost: the pipeline's torque cost is the whole-body optimiser's, of torques normalised by
+// their effort limits.
+std::string ObjectiveUnit(WalkingObjective objective, const std::string& source) {
   switch (objective) {
     case WalkingObjective::kTravelTime: return "s";
-    case WalkingObjective::kSquaredTorque: return "N^2 m^2 s";
+    case WalkingObjective::kSquaredTorque:
+      return source == PlantTransitionSource::kPipelineName ? "normalised" : "N^2 m^2 s";
     default: return "J";
   }
 }
@@ -292,7 +295,7 @@ int RunCheck(const OracleCheckArguments& args) {
   if (out) {
     out->WriteFile("heldout.json", CheckJson(args, oracle, error) + "\n");
     out->WriteFile("heldout.png", OracleHeldOutPng(error, "held-out steps: " + source.name() + " table vs source",
-                                                   ObjectiveUnit(oracle.objective())));
+                                                   ObjectiveUnit(oracle.objective(), args.table.source)));
     out->Commit();
   }
   if (args.json) {
@@ -305,8 +308,8 @@ int RunCheck(const OracleCheckArguments& args) {
               args.samples, args.seed, error.both_feasible, error.only_predicted, error.only_measured, error.neither);
   std::printf("cost       SMSE %s, mean absolute error %s %s, mean relative error %s, correlation %s\n",
               FormatShort(error.smse).c_str(), FormatShort(error.mean_absolute_error).c_str(),
-              ObjectiveUnit(oracle.objective()).c_str(), FormatShort(error.mean_relative_error).c_str(),
-              FormatShort(error.correlation).c_str());
+              ObjectiveUnit(oracle.objective(), args.table.source).c_str(),
+              FormatShort(error.mean_relative_error).c_str(), FormatShort(error.correlation).c_str());
   if (out) std::printf("wrote      %s/heldout.json, %s/heldout.png\n", args.out.c_str(), args.out.c_str());
   return 0;
 }
