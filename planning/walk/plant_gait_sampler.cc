@@ -145,13 +145,12 @@ GaitMeasurement PlantGaitSampler::Measure(const PeriodicGait& gait) const {
     return m;
   }
   m.simulated = true;
-  m.torque_cost =
-      MeanStepTorqueCost(record.trajectory, options_.transient_steps, gait_steps - options_.transient_steps);
+  const int first = options_.transient_steps, last = gait_steps - options_.transient_steps;
+  m.torque_cost = MeanStepTorqueCost(record.trajectory, first, last);
   m.support_margin = record.reference.report.min_support_margin_after;
   m.slips = static_cast<int>(record.slips.size());
 
   const std::vector<WalkStepComparison> steps = CompareWalkSteps(record);
-  const int first = options_.transient_steps, last = gait_steps - options_.transient_steps;
   double com_work = 0.0, electrical = 0.0, heat = 0.0, rcof = 0.0, sole_rcof = 0.0, height = 0.0;
   int height_samples = 0;
   for (int k = first; k < last; ++k) {

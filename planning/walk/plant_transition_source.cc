@@ -44,6 +44,21 @@ std::string AxisText(const std::vector<double>& axis) {
   return text;
 }
 
+// Refuses an objective the mode does not measure.
+void CheckMeasured(WalkingObjective objective, PlantTransitionSource::Mode mode) {
+  using Mode = PlantTransitionSource::Mode;
+  if (mode == Mode::kPlant && objective == WalkingObjective::kSquaredTorque) {
+    throw std::invalid_argument(std::string("PlantTransitionSource: the plant measures no squared static torques "
+                                            "(objective '") +
+                                to_string(objective) + "'); use ecom, ecom_heat or time, or the pipeline source");
+  }
+  if (mode == Mode::kPipeline && objective == WalkingObjective::kComWorkPlusHeat) {
+    throw std::invalid_argument(std::string("PlantTransitionSource: the pipeline source runs no motors, so it "
+                                            "measures no heat (objective '") +
+                                to_string(objective) + "'); use torque, ecom or time, or the plant source");
+  }
+}
+
 }  // namespace
 
 PlantTransitionSource::PlantTransitionSource(std::shared_ptr<const PlantGaitSampler> sampler,
@@ -101,16 +116,7 @@ std::vector<GaitMeasurement> PlantTransitionSource::MeasureCell(const StepDispla
 std::vector<TransitionCost> PlantTransitionSource::EntriesFrom(const std::vector<GaitMeasurement>& measurements,
                                                                WalkingObjective objective,
                                                                const std::vector<double>& mu, Mode mode) {
-  if (mode == Mode::kPlant && objective == WalkingObjective::kSquaredTorque) {
-    throw std::invalid_argument(std::string("PlantTransitionSource: the plant measures no squared static torques "
-                                            "(objective '") +
-                                to_string(objective) + "'); use ecom, ecom_heat or time, or the pipeline source");
-  }
-  if (mode == Mode::kPipeline && objective == WalkingObjective::kComWorkPlusHeat) {
-    throw std::invalid_argument(std::string("PlantTransitionSource: the pipeline source runs no motors, so it "
-                                            "measures no heat (objective '") +
-                                to_string(objective) + "'); use torque, ecom or time, or the plant source");
-  }
+  CheckMeasured(objective, mode);
   std::vector<TransitionCost> entries(mu.size());
   for (std::size_t k = 0; k < mu.size(); ++k) {
     for (const GaitMeasurement& m : measurements) {
@@ -146,8 +152,8 @@ std::vector<TransitionCost> PlantTransitionSource::DoCellEntries(const WalkingMo
                                 "', but its gait sampler walks '" + sampler_->walking_model().name() +
                                 "' (another walking model); build the source for the oracle's model");
   }
-  // An objective the mode does not measure is refused before the first gait is measured.
-  EntriesFrom({}, objective, mu, mode_);
+  // Before the first gait is measured.
+  CheckMeasured(objective, mode_);
   return EntriesFrom(MeasureCell(d), objective, mu, mode_);
 }
 
