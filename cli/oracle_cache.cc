@@ -64,16 +64,17 @@ OracleGrid DefaultOracleGrid(const TransitionSource* source, const WalkingModel&
 }
 
 std::string OracleCachePath(const std::string& cache, const WalkingModel& model, WalkingObjective objective,
-                            const TransitionSource* source) {
+                            const TransitionSource* source, const OracleGrid& grid) {
   std::string name = model.name() + "-" + to_string(objective);
   if (source != nullptr && source->name() != TransitionOracle::kSource) name += "-" + source->name();
+  if (grid != DefaultOracleGrid(source, model)) name += "-grid-" + grid.Fingerprint();
   return cache + "/" + name + ".oracle";
 }
 
 TransitionOracle LoadOrBuildOracle(const std::string& cache, const WalkingModel& model, WalkingObjective objective,
                                    std::shared_ptr<const TransitionSource> source, std::optional<OracleGrid> grid) {
   if (!grid) grid = DefaultOracleGrid(source.get(), model);
-  const std::string path = OracleCachePath(cache, model, objective, source.get());
+  const std::string path = OracleCachePath(cache, model, objective, source.get(), *grid);
   const std::string task = source == nullptr ? std::string("building the transition oracle")
                                              : "measuring the " + source->name() + " oracle's gaits";
   OracleBuildOptions build;

@@ -37,10 +37,13 @@ planning::OracleGrid DefaultOracleGrid(const planning::TransitionSource* source,
 /// The humanoid's joint-controller YAML in the data folder.
 std::string DefaultControlYaml();
 
-/// The oracle file of a source in the cache folder: "<robot>-<objective>.oracle" for the analytic model,
-/// "<robot>-<objective>-<source name>.oracle" for another source.
+/// The oracle file of a source and grid in the cache folder: "<robot>-<objective>.oracle" for the analytic model,
+/// "<robot>-<objective>-<source name>.oracle" for another source, each on its DefaultOracleGrid; any other grid
+/// adds "-grid-<OracleGrid::Fingerprint()>" before ".oracle", so a table of another grid never replaces the
+/// cached default one (or another grid's).
 std::string OracleCachePath(const std::string& cache, const planning::WalkingModel& model,
-                            planning::WalkingObjective objective, const planning::TransitionSource* source);
+                            planning::WalkingObjective objective, const planning::TransitionSource* source,
+                            const planning::OracleGrid& grid);
 
 /// The oracle from the cache folder, or built (with a progress bar) and saved there by
 /// TransitionOracle::LoadOrBuild, which creates the folder. A cache that cannot be created or written is no reason

@@ -12,12 +12,14 @@
 #include <cstdio>
 #include <cstdint>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -62,7 +64,8 @@ struct TableArguments {
 
 struct OracleBuildArguments {
   TableArguments table;
-  std::string out;
+  std::string out;    // --out, or after parsing the file --cache names
+  std::string cache;  // --cache
   std::string checkpoint;
   int chunk_cells = 16;
   bool chunk_cells_given = false;
@@ -177,7 +180,7 @@ void PrintSummary(const OracleBuildArguments& args, const TransitionOracle& orac
               mpi.size(), mpi.size() == 1 ? "" : "s", computed, resumed, FormatShort(seconds).c_str());
 }
 
-int RunBuild(const OracleBuildArguments& args) {
+int RunBuild(OracleBuildArguments args) {
   MpiSession mpi;
   const auto start = std::chrono::steady_clock::now();
   // Every rank checks and loads the same inputs; a mistake fails every rank with the same message, before any
@@ -187,8 +190,19 @@ int RunBuild(const OracleBuildArguments& args) {
   TableInputs table;
   std::unique_ptr<OracleShardBuilder> builder;
   try {
-    CheckOutputFile("--out", args.out);
+    if (args.cache.empty()) CheckOutputFile("--out", args.out);
     table = LoadTableInputs(args.table);
+    if (!args.cache.empty()) {
+      args.out = OracleCachePath(args.cache, *table.model, table.objective, table.source.get(), table.grid);
+      // plan creates its cache folder on first use; so does this.
+      std::error_code folder_error;
+      std::filesystem::create_directories(args.cache, folder_error);
+      if (folder_error) {
+        throw std::runtime_error("--cache '" + args.cache + "' cannot be created (" + folder_error.message() +
+                                 "); give a writable folder");
+      }
+      CheckOutputFile("--cache", args.out);
+    }
     const std::string checkpoint = args.checkpoint.empty() ? args.out + ".parts" : args.checkpoint;
     // A gait source's cell measures several gaits (seconds each): one cell per chunk spreads them over the ranks
     // and loses little to a kill.
@@ -324,7 +338,11 @@ void RegisterOracleCommand(CommandRegistry* registry) {
                   app.require_subcommand(1);
                   CLI::App* build = app.add_subcommand(
                       "build", "Build an oracle over a grid; resumable; `mpirun -np N cairn oracle build ...` shares it");
-                  build->add_option("--out", build_args->out, "The oracle file to write")->required();
+                  CLI::Option* out = build->add_option("--out", build_args->out, "The oracle file to write");
+                  build->add_option("--cache", build_args->cache,
+                                    "Instead of --out: write into this oracle cache folder, under the name plan, "
+                                    "walk and run look up for the same robot, objective, source and grid")
+                      ->excludes(out);
                   AddTableOptions(*build, &build_args->table);
                   build->add_option("--checkpoint", build_args->checkpoint,
                                     "Folder of the chunk checkpoints (default: <out>.parts)");
@@ -353,6 +371,10 @@ void RegisterOracleCommand(CommandRegistry* registry) {
                     if (check->parsed()) {
                       FinishTableOptions(*check, &check_args->table);
                       return RunCheck(*check_args);
+                    }
+                    if (build_args->out.empty() && build_args->cache.empty()) {
+                      throw UsageError("oracle build needs --out FILE (the table to write) or --cache DIR (an "
+                                       "oracle cache folder, as plan --oracle-cache takes)");
                     }
                     build_args->chunk_cells_given = build->count("--chunk-cells") > 0;
                     FinishTableOptions(*build, &build_args->table);

@@ -107,6 +107,12 @@ std::string SourceLine(const TransitionSource* source) {
   return line;
 }
 
+// The grid's five axis lines, as headers write them.
+std::string GridLines(const OracleGrid& grid) {
+  return AxisLine("dx", grid.dx) + AxisLine("dy", grid.dy) + AxisLine("dz", grid.dz) +
+         AxisLine("dtheta", grid.dtheta) + AxisLine("mu", grid.mu);
+}
+
 // The header lines after the magic that say what the entries depend on (and that Load checks).
 std::string HeaderFields(const std::string& robot, std::uint64_t model_hash, WalkingObjective objective,
                          const std::string& source, const OracleGrid& grid) {
@@ -114,9 +120,7 @@ std::string HeaderFields(const std::string& robot, std::uint64_t model_hash, Wal
   fields += "model_hash " + HashHex(model_hash) + "\n";
   fields += std::string("objective ") + to_string(objective) + "\n";
   fields += "source " + source + "\n";
-  fields += AxisLine("dx", grid.dx) + AxisLine("dy", grid.dy) + AxisLine("dz", grid.dz) +
-            AxisLine("dtheta", grid.dtheta) + AxisLine("mu", grid.mu);
-  return fields;
+  return fields + GridLines(grid);
 }
 
 }  // namespace
@@ -195,6 +199,10 @@ void OracleGrid::Validate(const StepReach& reach) const {
                                 " entries, more than the limit of " + FormatShort(kMaxEntries) +
                                 "; use fewer axis values");
   }
+}
+
+std::string OracleGrid::Fingerprint() const {
+  return HashHex(Fnv1a64(GridLines(*this)));
 }
 
 bool operator==(const OracleGrid& a, const OracleGrid& b) {

@@ -52,6 +52,11 @@ struct OracleGrid {
   /// increasing, non-finite, outside `reach` (mu: not positive), or dy is not positive, and naming the count if
   /// the grid has more than kMaxEntries entries.
   void Validate(const StepReach& reach) const;
+
+  /// 16 hexadecimal digits identifying the grid's values: FNV-1a 64 (common/hash.h) of the five axis lines an
+  /// oracle file's header holds (name, size and the values printed exactly, dx, dy, dz, dtheta, mu). Equal grids
+  /// give equal fingerprints on every machine; the oracle cache names the files of non-default grids by it.
+  std::string Fingerprint() const;
 };
 
 bool operator==(const OracleGrid& a, const OracleGrid& b);

@@ -10,6 +10,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cairn/planning/locomotion/transition_oracle.h>
+
 #include "../planning/support/shared_oracle.h"
 #include "run_cairn.h"
 #include "run_cairn_streams.h"
@@ -247,16 +249,21 @@ TEST_F(PlanCommandTest, JsonWithoutAPlanHasNullsNotPlaceholders) {
   for (const char* bad : {": -1000", ": nan", ": -nan", ": inf", ": -inf"}) EXPECT_THAT(run.out, Not(HasSubstr(bad)));
 }
 
-// `cairn oracle build --source plant` writes the table `cairn plan --oracle-source plant` loads from its cache (one
-// cell, the default timings: six gaits walked in the plant), and the plan names its source.
+// `cairn oracle build --source plant --cache` writes the table `cairn plan --oracle-source plant` loads from that
+// cache (one cell, the default timings: six gaits walked in the plant), and the plan names its source. A table of
+// another grid than the default is cached under its grid's fingerprint, so it never replaces the default table.
 TEST_F(PlanCommandTest, PlansWithThePlantOracleTheOracleCommandBuilt) {
   const std::string cache = (dir_ / "cache").string();
   const std::string grid = (dir_ / "grid.yaml").string();
   std::ofstream(grid) << "dx: [0.1]\ndy: [0.2]\ndz: [0.0]\ndtheta: [0.0]\nmu: [1.0]\n";
-  fs::create_directories(cache);
-  const CairnStreams built = RunCairnStreams("oracle build --source plant --grid " + grid + " --out " + cache +
-                                             "/cairn_humanoid-ecom_heat-plant.oracle --json");
+  const std::string table = cache + "/cairn_humanoid-ecom_heat-plant-grid-" +
+                            cairn::planning::OracleGrid::Load(grid).Fingerprint() + ".oracle";
+  const CairnStreams built =
+      RunCairnStreams("oracle build --source plant --grid " + grid + " --cache " + cache + " --json");
   ASSERT_EQ(built.exit_code, 0) << built.err;
+  EXPECT_THAT(built.out, HasSubstr("\"out\": \"" + table + "\""));
+  EXPECT_TRUE(fs::exists(table));
+  EXPECT_FALSE(fs::exists(cache + "/cairn_humanoid-ecom_heat-plant.oracle"));
   const CairnStreams run = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --json --time-limit 5 " +
                                            "--oracle-source plant --oracle-grid " + grid + " --oracle-cache " + cache);
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -290,7 +297,8 @@ TEST_F(PlanCommandTest, PlansWithThePipelineOracleOnTheWholeBodyTorqueCost) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("\"oracle_source\": \"pipeline t_ds "));
   EXPECT_THAT(run.out, HasSubstr(" stabilizer fft margin 0"));
-  EXPECT_TRUE(fs::exists(cache + "/cairn_humanoid-torque-pipeline.oracle"));
+  EXPECT_TRUE(fs::exists(cache + "/cairn_humanoid-torque-pipeline-grid-" +
+                         cairn::planning::OracleGrid::Load(grid).Fingerprint() + ".oracle"));
   const CairnStreams heat = RunCairnStreams("plan --scenario " + kScenarios + "flat.yaml --oracle-source pipeline " +
                                             "--oracle-grid " + grid + " --oracle-cache " + cache);
   EXPECT_EQ(heat.exit_code, 1);

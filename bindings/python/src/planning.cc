@@ -531,6 +531,8 @@ void DefinePlanning(py::module_ m) {
       .def_readwrite("mu", &OracleGrid::mu, "Friction axis.")
       .def("num_entries", &OracleGrid::num_entries, "Entries.")
       .def("Validate", &OracleGrid::Validate, py::arg("reach"), "ValueError naming a bad axis value.")
+      .def("Fingerprint", &OracleGrid::Fingerprint,
+           "16 hex digits naming the grid's values (the CLI's oracle cache names other grids' tables by it).")
       .def_static("Load", &OracleGrid::Load, py::arg("path"),
                   "A grid from YAML (dx, dy, dz, dtheta, mu: lists or {from, to, step}).");
   py::class_<TransitionSource, std::shared_ptr<TransitionSource>>(

@@ -200,6 +200,14 @@ def test_oracle_built_in_shards_matches_one_build(walking_model, tmp_path):
     assert not (tmp_path / "parts").exists()
 
 
+def test_a_grid_fingerprint_names_its_values():
+    grid = planning.OracleGrid()
+    grid.dx, grid.dy, grid.dz, grid.dtheta, grid.mu = [0.15, 0.25], [0.18, 0.24], [0.0, 0.05], [0.0, 0.5], [0.06, 0.12, 1.0]
+    assert grid.Fingerprint() == "55ac21ae5066908c"  # the C++ test's known answer
+    grid.mu = [0.06, 0.12]
+    assert grid.Fingerprint() != "55ac21ae5066908c"
+
+
 def test_an_oracle_names_its_source_and_the_model_source_is_the_default(walking_model, tmp_path):
     grid = planning.OracleGrid()
     grid.dx, grid.dy, grid.dz, grid.dtheta, grid.mu = [0.15], [0.2], [0.0], [0.0], [0.1, 1.0]
