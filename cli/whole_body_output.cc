@@ -23,6 +23,13 @@ namespace cairn::cli {
 namespace {
 constexpr double kPixelsPerMetre = 300.0;
 constexpr double kMaxExtent = 50.0;  // m
+
+// The scenario's terrain is exact: the swing feet keep their clearance from its slopes and treads.
+planning::TrajectoryOptimizerOptions WholeBodyOptions() {
+  planning::TrajectoryOptimizerOptions options;
+  options.ground_follows_terrain = true;
+  return options;
+}
 }  // namespace
 
 std::string WholeBodyTrajectoryJson(const planning::WholeBodyTrajectory& t) {
@@ -128,14 +135,14 @@ std::string WholeBodyTrajectoryPng(const multibody::Model& model, const planning
   return std::string(bytes.begin(), bytes.end());
 }
 
-int RunWholeBody(const planning::FootstepScenario& scenario, const planning::FootstepPlan& plan, bool quiet,
-                 AtomicOutputDirectory* out) {
+int RunWholeBody(const planning::FootstepScenario& scenario, const planning::FootstepPlan& plan,
+                 const planning::TerrainMap* terrain, bool quiet, AtomicOutputDirectory* out) {
   multibody::UrdfOptions urdf;
   urdf.floating_base = true;
   const auto model = std::make_shared<const multibody::Model>(
       multibody::ParseUrdfFile(DataDirectory() + "/robots/cairn_humanoid.urdf", urdf));
   const std::vector<planning::EnvironmentBox> environment = planning::EnvironmentFromObstacles(scenario.obstacles());
-  const planning::WholeBodyTrajectory trajectory = planning::OptimizeWholeBodyTrajectory(model, plan, environment);
+  const planning::WholeBodyTrajectory trajectory = planning::OptimizeWholeBodyTrajectory(model, plan, environment, WholeBodyOptions(), terrain);
   if (out != nullptr) {
     out->WriteFile("trajectory.json", WholeBodyTrajectoryJson(trajectory) + "\n");
     out->WriteFile("trajectory.png", WholeBodyTrajectoryPng(*model, trajectory, environment));

@@ -28,7 +28,8 @@ std::string WholeBodyTrajectoryPng(const multibody::Model& model, const planning
 /// scenario's obstacles, prints a summary line (or the report's reason when it fails), and, with `out`, writes
 /// trajectory.json and trajectory.png into it (uncommitted). Returns 0, or 1 when the optimisation failed (the
 /// files are still written: failures are results).
-int RunWholeBody(const planning::FootstepScenario& scenario, const planning::FootstepPlan& plan, bool quiet,
-                 AtomicOutputDirectory* out);
+/// `terrain` (may be null) is the ground the plan was made on; the soles are laid on it (tilted on slopes).
+int RunWholeBody(const planning::FootstepScenario& scenario, const planning::FootstepPlan& plan,
+                 const planning::TerrainMap* terrain, bool quiet, AtomicOutputDirectory* out);
 
 }  // namespace cairn::cli

@@ -44,13 +44,15 @@ int NumInputs(const std::shared_ptr<const multibody::Model>& model, const std::s
 CollisionPenalty::CollisionPenalty(const std::string& name, std::shared_ptr<const multibody::Model> model,
                                    const std::vector<EnvironmentBox>& environment,
                                    const std::vector<std::string>& contact_bodies, double d_safe, double self_margin,
-                                   double fraction, double ground_height, CollisionHessian hessian)
+                                   double fraction, double ground_height, CollisionHessian hessian,
+                                   std::shared_ptr<const TerrainMap> ground_terrain)
     : optimization::Evaluator(name, NumInputs(model, name, d_safe, self_margin, fraction), 1,
                               DensePattern(1, NumInputs(model, name, d_safe, self_margin, fraction)),
                               optimization::DerivativeSource::kAnalytic),
       model_(std::move(model)),
       chart_(*model_),
       ground_height_(ground_height),
+      ground_terrain_(std::move(ground_terrain)),
       d_safe_(d_safe),
       self_margin_(self_margin),
       fraction_(fraction),
@@ -102,7 +104,7 @@ CollisionPenalty::CollisionPenalty(const std::string& name, std::shared_ptr<cons
   if (std::isinf(ground_height_)) {
     throw std::invalid_argument(name + ": ground_height is infinite; give a height in metres or NaN for no ground");
   }
-  if (!std::isnan(ground_height_)) {
+  if (!std::isnan(ground_height_) || ground_terrain_ != nullptr) {
     for (int b = 1; b < model_->num_bodies(); ++b) {
       if (contact_bodies_.count(b) != 0) continue;
       for (const multibody::Geometry& g : model_->body(b).collisions) {
@@ -135,26 +137,40 @@ double CollisionPenalty::GroundPenalty(const multibody::Data& data, Eigen::Vecto
   for (const GroundPoint& point : ground_points_) {
     const multibody::Pose& X_WB = data.X_world[static_cast<std::size_t>(point.body)];
     const Eigen::Vector3d p_W = X_WB * point.p_B;
-    const double h = d_safe_ - (p_W.z() - point.radius - ground_height_);
+    Eigen::Vector3d normal;
+    const double h = d_safe_ - Clearance(p_W, point.radius, &normal);
     if (h <= 0.0) continue;
     sum += h * h;
     if (gradient == nullptr) continue;
-    Eigen::VectorXd dz = Eigen::VectorXd::Zero(model_->nv());
-    HeightGradient(data, point.body, p_W, dz);
-    *gradient -= 2.0 * h * dz;
+    Eigen::VectorXd dd = Eigen::VectorXd::Zero(model_->nv());
+    ClearanceGradient(data, point.body, p_W, normal, dd);
+    *gradient -= 2.0 * h * dd;
   }
   return sum;
 }
 
-void CollisionPenalty::HeightGradient(const multibody::Data& data, int body, const Eigen::Vector3d& p_W,
-                                      Eigen::Ref<Eigen::VectorXd> dz) const {
-  // Along every joint between the body and the root: the z velocity of p under each motion column.
+double CollisionPenalty::Clearance(const Eigen::Vector3d& p_W, double radius, Eigen::Vector3d* normal) const {
+  int col = 0, row = 0;
+  if (ground_terrain_ != nullptr && ground_terrain_->CellAt(p_W.x(), p_W.y(), &col, &row) &&
+      ground_terrain_->has_ground(col, row)) {
+    *normal = ground_terrain_->normal(col, row);
+    const Eigen::Vector2d c = ground_terrain_->CellCenter(col, row);
+    return normal->dot(p_W - Eigen::Vector3d(c.x(), c.y(), ground_terrain_->height(col, row))) - radius;
+  }
+  *normal = Eigen::Vector3d::UnitZ();
+  if (std::isnan(ground_height_)) return std::numeric_limits<double>::infinity();
+  return p_W.z() - radius - ground_height_;
+}
+
+void CollisionPenalty::ClearanceGradient(const multibody::Data& data, int body, const Eigen::Vector3d& p_W,
+                                         const Eigen::Vector3d& normal, Eigen::Ref<Eigen::VectorXd> gradient) const {
+  // Along every joint between the body and the root: the velocity of p along the normal under each motion column.
   for (int i = body; i > 0; i = model_->parent(i)) {
     const multibody::Joint& joint = model_->joint(i);
     const multibody::Pose& X = data.X_world[static_cast<std::size_t>(i)];
     for (int k = 0; k < joint.nv; ++k) {
       const multibody::Vector6d s = X.ActMotion(multibody::internal::MotionSubspaceColumn(joint, k));
-      dz(joint.idx_v + k) = (s.tail<3>() + s.head<3>().cross(p_W)).z();
+      gradient(joint.idx_v + k) = normal.dot(s.tail<3>() + s.head<3>().cross(p_W));
     }
   }
 }
@@ -175,10 +191,11 @@ Eigen::MatrixXd CollisionPenalty::GaussNewtonHessian(const Eigen::VectorXd& q_ra
   }
   for (const GroundPoint& point : ground_points_) {
     const Eigen::Vector3d p_W = data.X_world[static_cast<std::size_t>(point.body)] * point.p_B;
-    if (d_safe_ - (p_W.z() - point.radius - ground_height_) <= 0.0) continue;
-    Eigen::VectorXd dz = Eigen::VectorXd::Zero(nv);
-    HeightGradient(data, point.body, p_W, dz);
-    rows.push_back(std::move(dz));
+    Eigen::Vector3d normal;
+    if (d_safe_ - Clearance(p_W, point.radius, &normal) <= 0.0) continue;
+    Eigen::VectorXd dd = Eigen::VectorXd::Zero(nv);
+    ClearanceGradient(data, point.body, p_W, normal, dd);
+    rows.push_back(std::move(dd));
   }
   Eigen::MatrixXd G(static_cast<Eigen::Index>(rows.size()), nv);
   for (std::size_t r = 0; r < rows.size(); ++r) G.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
@@ -190,7 +207,8 @@ double CollisionPenalty::GroundDistance(const multibody::Data& data, std::string
   double best = std::numeric_limits<double>::infinity();
   for (const GroundPoint& point : ground_points_) {
     const Eigen::Vector3d p_W = data.X_world[static_cast<std::size_t>(point.body)] * point.p_B;
-    const double d = p_W.z() - point.radius - ground_height_;
+    Eigen::Vector3d normal;
+    const double d = Clearance(p_W, point.radius, &normal);
     if (d < best) {
       best = d;
       if (which != nullptr) *which = point.name + " - ground";
@@ -269,7 +287,8 @@ std::vector<int> CollisionPenalty::ActiveColumns(const Eigen::VectorXd& q) const
   }
   for (const GroundPoint& point : ground_points_) {
     const Eigen::Vector3d p_W = data.X_world[static_cast<std::size_t>(point.body)] * point.p_B;
-    if (d_safe_ - (p_W.z() - point.radius - ground_height_) > 0.0) bodies.insert(point.body);
+    Eigen::Vector3d normal;
+    if (d_safe_ - Clearance(p_W, point.radius, &normal) > 0.0) bodies.insert(point.body);
   }
   std::set<int> columns;
   for (const int body : bodies) {

@@ -14,6 +14,7 @@
 #include <cairn/multibody/model.h>
 #include <cairn/multibody/pose.h>
 #include <cairn/optimization/evaluator.h>
+#include <cairn/planning/footstep/terrain_map.h>
 #include <cairn/planning/trajectory/configuration_chart.h>
 
 namespace cairn::planning {
@@ -47,6 +48,13 @@ struct EnvironmentBox {
 /// above the plane less its radius. A sole hovering parallel to the floor then has a smooth penalty, where the
 /// box-to-box distance would switch between corners.
 ///
+/// With a `ground_terrain` the ground follows the terrain instead: d_p is p's distance from the plane of the cell
+/// under it (through the cell's ground point, with its normal; radius subtracted), so a swing foot keeps its
+/// clearance from a slope or a stair tread and a sole tilted onto a slope is not pushed off it by a level floor.
+/// The term is smooth within a cell and continuous across cells of one plane; at a step's edge it jumps (the
+/// solver sees the edge through the samples between waypoints). Where the map has no cell or no ground under p,
+/// the plane at ground_height applies (none if NaN).
+///
 /// The configuration is a waypoint q (inputs: nq) or, with `fraction` in (0, 1), the point between two waypoints
 /// (inputs: [q_a; q_b], 2 nq): q = (1 - fraction) q_a + fraction q_b, the quaternion renormalised. Samples
 /// between knots keep a swing foot from passing through an edge where no waypoint looks.
@@ -76,7 +84,8 @@ class CollisionPenalty final : public optimization::Evaluator {
                    const std::vector<EnvironmentBox>& environment, const std::vector<std::string>& contact_bodies,
                    double d_safe, double self_margin, double fraction = 0.0,
                    double ground_height = std::numeric_limits<double>::quiet_NaN(),
-                   CollisionHessian hessian = CollisionHessian::kDifferences);
+                   CollisionHessian hessian = CollisionHessian::kDifferences,
+                   std::shared_ptr<const TerrainMap> ground_terrain = nullptr);
   ~CollisionPenalty() override;
 
   /// Every checked pair closer than its margin at x (a waypoint or a sample as the inputs), for reports.
@@ -115,9 +124,12 @@ class CollisionPenalty final : public optimization::Evaluator {
   };
   // Ground term at q (poses in data); adds its gradient (tangent) if gradient is not null.
   double GroundPenalty(const multibody::Data& data, Eigen::VectorXd* gradient) const;
-  // d(z of p_W)/dv (tangent) for a point p_W fixed to `body`.
-  void HeightGradient(const multibody::Data& data, int body, const Eigen::Vector3d& p_W,
-                      Eigen::Ref<Eigen::VectorXd> dz) const;
+  // The clearance of a support point at p_W with `radius` from the ground under it, and in *normal the ground's
+  // normal there (the clearance's gradient with respect to p_W); infinity where there is no ground.
+  double Clearance(const Eigen::Vector3d& p_W, double radius, Eigen::Vector3d* normal) const;
+  // d(normal . p_W)/dv (tangent) for a point p_W fixed to `body`.
+  void ClearanceGradient(const multibody::Data& data, int body, const Eigen::Vector3d& p_W,
+                         const Eigen::Vector3d& normal, Eigen::Ref<Eigen::VectorXd> gradient) const;
   // The Gauss-Newton Hessian of the penalty with respect to the evaluator's raw configuration point q_raw (a
   // waypoint, or a sample's blended point), nq x nq.
   Eigen::MatrixXd GaussNewtonHessian(const Eigen::VectorXd& q_raw) const;
@@ -128,6 +140,7 @@ class CollisionPenalty final : public optimization::Evaluator {
   std::shared_ptr<const multibody::Model> model_;
   ConfigurationChart chart_;
   double ground_height_;
+  std::shared_ptr<const TerrainMap> ground_terrain_;
   std::vector<GroundPoint> ground_points_;
   double d_safe_;
   double self_margin_;

@@ -43,11 +43,31 @@ optimization::SolverOptions MakeSolverOptions(const optimization::Solver& solver
   }
   return out;
 }
+// The options with the level ground lowered by the deepest reach of a tilted sole target's corner below its own
+// centre: a sole laid on a slope is not pushed out of a floor that cuts into its heel. Level soles leave it as it
+// is (the walks on level and perceived ground solve the same problem as before soles were tilted).
+TrajectoryOptimizerOptions WithGroundUnderTheSoles(const TrajectoryOptimizerOptions& options,
+                                                   const std::vector<WaypointSpec>& specs) {
+  TrajectoryOptimizerOptions out = options;
+  double reach = 0.0;
+  for (const WaypointSpec& spec : specs) {
+    for (const WaypointContact& contact : spec.contacts) {
+      for (const double sx : {-0.5, 0.5}) {
+        for (const double sy : {-0.5, 0.5}) {
+          const Eigen::Vector3d corner_S(sx * options.sole_length, sy * options.sole_width, 0.0);
+          reach = std::min(reach, (contact.X_WF.rotation() * corner_S).z());
+        }
+      }
+    }
+  }
+  out.ground_height += reach;  // NaN stays NaN
+  return out;
+}
 }  // namespace
 
 WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody::Model> model, const FootstepPlan& plan,
                                                 const std::vector<EnvironmentBox>& environment,
-                                                const TrajectoryOptimizerOptions& options) {
+                                                const TrajectoryOptimizerOptions& options, const TerrainMap* terrain) {
   if (model == nullptr) throw std::invalid_argument("OptimizeWholeBodyTrajectory: the robot model is null");
   ValidateTrajectoryOptimizerOptions(options);
   const std::unique_ptr<optimization::Solver> solver = optimization::MakeSolver(options.solver);
@@ -58,7 +78,12 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
     out.report.message = "no footstep plan to optimise: " + plan.reason;
     return out;
   }
-  const std::vector<WaypointSpec> specs = MakeWaypointSpecs(plan, options);
+  const std::vector<WaypointSpec> specs = MakeWaypointSpecs(plan, options, terrain);
+  // The collision terms keep their own copy of the ground (evaluators are shared objects).
+  const std::shared_ptr<const TerrainMap> ground = terrain != nullptr && options.ground_follows_terrain
+                                                       ? std::make_shared<const TerrainMap>(*terrain)
+                                                       : nullptr;
+  const TrajectoryOptimizerOptions problem_options = WithGroundUnderTheSoles(options, specs);
   const int num_stances = static_cast<int>(plan.steps.size()) + 1;
   const int window = options.window_stances == 0 ? num_stances : std::min(options.window_stances, num_stances);
   const auto total = static_cast<int>(specs.size());
@@ -73,7 +98,7 @@ WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody:
     const int last = std::min(2 * (stance + window) - 1, total) ;  // one past the window's last waypoint
     const bool final_window = last >= total;
     std::vector<WaypointSpec> window_specs(specs.begin() + first, specs.begin() + last);
-    const TrajectoryProblem problem(model, window_specs, environment, options, previous);
+    const TrajectoryProblem problem(model, window_specs, environment, problem_options, previous, ground);
     if (out.coordinate_names.empty()) out.coordinate_names = problem.coordinate_names();
     // Warm start: the previous window's solution where the windows overlap, inverse kinematics beyond.
     std::vector<Eigen::VectorXd> start_q = problem.WarmStart();

@@ -5,6 +5,7 @@
 
 #include <cairn/multibody/model.h>
 #include <cairn/planning/footstep/footstep_plan.h>
+#include <cairn/planning/footstep/terrain_map.h>
 #include <cairn/planning/trajectory/collision_penalty.h>
 #include <cairn/planning/trajectory/trajectory_optimizer_options.h>
 #include <cairn/planning/trajectory/whole_body_trajectory.h>
@@ -22,8 +23,13 @@ namespace cairn::planning {
 /// by 0.21 m"); the waypoints then hold the best point the solver returned (or are empty if no solve ran).
 /// Throws std::invalid_argument only for a null model, options out of range, a model without the option's
 /// frames, or a plan with more than kMaxTrajectoryStances stances or a step without a positive swing time.
+///
+/// `terrain` (may be null): the ground the plan stands on. Its normals tilt the sole targets (MakeWaypointSpecs)
+/// and the collision terms keep links clear of it (CollisionPenalty's ground_terrain; options.ground_height where
+/// it has no cell); without it every sole is held level over the plane at options.ground_height.
 WholeBodyTrajectory OptimizeWholeBodyTrajectory(std::shared_ptr<const multibody::Model> model, const FootstepPlan& plan,
                                                 const std::vector<EnvironmentBox>& environment,
-                                                const TrajectoryOptimizerOptions& options = TrajectoryOptimizerOptions());
+                                                const TrajectoryOptimizerOptions& options = TrajectoryOptimizerOptions(),
+                                                const TerrainMap* terrain = nullptr);
 
 }  // namespace cairn::planning

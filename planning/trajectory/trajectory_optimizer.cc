@@ -30,6 +30,7 @@ TrajectoryOptimizer::TrajectoryOptimizer(std::shared_ptr<const multibody::Model>
   }
   DeclareAbstractInputPort("plan", systems::Value<FootstepPlan>(FootstepPlan()));
   DeclareAbstractInputPort("environment", systems::Value<std::vector<EnvironmentBox>>(std::vector<EnvironmentBox>()));
+  DeclareAbstractInputPort("terrain", systems::Value<TerrainMap>(TerrainMap(Eigen::Vector2d::Zero(), 1, 1, 1.0)));
   trajectory_state_ = DeclareAbstractState(systems::Value<WholeBodyTrajectory>(NotSolvedYet()));
   const int state = trajectory_state_;
   DeclareAbstractOutputPort(
@@ -44,8 +45,10 @@ TrajectoryOptimizer::TrajectoryOptimizer(std::shared_ptr<const multibody::Model>
 void TrajectoryOptimizer::Solve(const systems::Context& context, systems::State* next) const {
   const auto& plan = get_plan_input_port().Eval<FootstepPlan>(context);
   const auto& environment = get_environment_input_port().Eval<std::vector<EnvironmentBox>>(context);
+  const TerrainMap* terrain =
+      get_terrain_input_port().HasValue(context) ? &get_terrain_input_port().Eval<TerrainMap>(context) : nullptr;
   next->get_mutable_abstract_state<WholeBodyTrajectory>(trajectory_state_) =
-      OptimizeWholeBodyTrajectory(model_, plan, environment, options_);
+      OptimizeWholeBodyTrajectory(model_, plan, environment, options_, terrain);
 }
 
 }  // namespace cairn::planning

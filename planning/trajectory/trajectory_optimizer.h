@@ -19,6 +19,7 @@ namespace cairn::planning {
 /// |---|---|---|
 /// | input `plan` | FootstepPlan | footsteps with timing (FootstepPlanner's `plan`) |
 /// | input `environment` | std::vector<EnvironmentBox> | obstacle boxes (the ground is options.ground_height) |
+/// | input `terrain` | TerrainMap | the ground under the plan: its cells' normals tilt the sole targets and its planes are the collision terms' ground; cells without ground (or the port left unconnected on a lone system) keep soles level over options.ground_height |
 /// | output `trajectory` | WholeBodyTrajectory | waypoints q_t, contacts, COM, and the solver report |
 ///
 /// The solve is expensive and its iterations are budgeted, not timed, so it runs in events and its result lives
@@ -34,6 +35,7 @@ class TrajectoryOptimizer final : public systems::LeafSystem {
 
   const systems::InputPort& get_plan_input_port() const { return GetInputPort("plan"); }
   const systems::InputPort& get_environment_input_port() const { return GetInputPort("environment"); }
+  const systems::InputPort& get_terrain_input_port() const { return GetInputPort("terrain"); }
   const systems::OutputPort& get_trajectory_output_port() const { return GetOutputPort("trajectory"); }
 
   /// The options.

@@ -48,8 +48,16 @@ struct TrajectoryOptimizerOptions {
   /// The frame whose roll is held at zero (2.9d); the thesis' waist is the floating base.
   std::string waist_frame{"pelvis"};
   /// Height of the flat ground under the plan, m: every link not in contact keeps d_safe from this plane
-  /// (CollisionPenalty's closed-form ground term). NaN: no ground.
+  /// (CollisionPenalty's closed-form ground term). The solve lowers it by the deepest reach of a tilted sole
+  /// target's corner below that sole's centre, so that it does not cut into a sole laid on a slope. NaN: no
+  /// ground.
   double ground_height{0.0};
+  /// With a terrain given to the solve: the ground term measures each point's clearance from the plane of the
+  /// terrain cell under it instead (CollisionPenalty's ground_terrain), so a swing foot keeps d_safe from a slope
+  /// or a stair tread. Off by default: on perceived terrain the cells' noisy heights make the term jump from cell
+  /// to cell and the solve stalls at its iteration limit (the cloth mock-up of the main diagram, measured
+  /// 2026-12-07); on the scenarios' exact slopes it solves (docs/walk.md, "Slopes").
+  bool ground_follows_terrain{false};
   /// Solver by name (MakeSolver): "ipopt" (default) or e.g. "nlopt:SLSQP" for small problems.
   std::string solver{"ipopt"};
   /// Ipopt's Hessian of the Lagrangian:

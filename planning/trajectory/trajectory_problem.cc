@@ -69,7 +69,8 @@ std::string RowViolation::ToString() const {
 
 TrajectoryProblem::TrajectoryProblem(std::shared_ptr<const multibody::Model> model, std::vector<WaypointSpec> waypoints,
                                      const std::vector<EnvironmentBox>& environment,
-                                     const TrajectoryOptimizerOptions& options, std::optional<FixedWaypoint> previous)
+                                     const TrajectoryOptimizerOptions& options, std::optional<FixedWaypoint> previous,
+                                     std::shared_ptr<const TerrainMap> terrain)
     : model_(std::move(model)),
       chart_(model_ != nullptr ? *model_ : throw std::invalid_argument("TrajectoryProblem: the robot model is null")),
       specs_(std::move(waypoints)),
@@ -144,7 +145,7 @@ TrajectoryProblem::TrajectoryProblem(std::shared_ptr<const multibody::Model> mod
     auto collision = std::make_shared<CollisionPenalty>("collision(" + spec.label + ")", model_, boxes,
                                                         ContactBodies(model_ref, spec.contacts), options_.d_safe,
                                                         options_.self_margin, 0.0, options_.ground_height,
-                                                        CollisionHessianOf(options_));
+                                                        CollisionHessianOf(options_), terrain);
     waypoint_collisions_.push_back(collision);
     if (options_.collision_weight > 0.0) {
       prog_.AddCost(std::make_shared<ScaledEvaluator>(collision, options_.collision_weight), q);
@@ -233,7 +234,7 @@ TrajectoryProblem::TrajectoryProblem(std::shared_ptr<const multibody::Model> mod
       auto sample = std::make_shared<CollisionPenalty>("collision(" + a.label + " -> " + b.label + ")", model_, boxes,
                                                        CommonContactBodies(model_ref, a, b), options_.d_safe,
                                                        options_.self_margin, fraction, options_.ground_height,
-                                                       CollisionHessianOf(options_));
+                                                       CollisionHessianOf(options_), terrain);
       sample_collisions_.emplace_back(sample, both);
       if (options_.collision_weight > 0.0) {
         prog_.AddCost(std::make_shared<ScaledEvaluator>(sample, options_.collision_weight), both);

@@ -50,11 +50,15 @@ class TrajectoryProblem {
     Eigen::VectorXd q;
   };
 
+  /// `terrain` (may be null): the ground the collision terms keep links clear of, where it has a cell
+  /// (CollisionPenalty's ground_terrain); elsewhere the plane at options.ground_height.
+  ///
   /// Throws std::invalid_argument for a null model, no waypoints, options out of range, a model without the
   /// sole or waist frames, a non-increasing waypoint time, or a fixed waypoint of the wrong size.
   TrajectoryProblem(std::shared_ptr<const multibody::Model> model, std::vector<WaypointSpec> waypoints,
                     const std::vector<EnvironmentBox>& environment, const TrajectoryOptimizerOptions& options,
-                    std::optional<FixedWaypoint> previous = std::nullopt);
+                    std::optional<FixedWaypoint> previous = std::nullopt,
+                    std::shared_ptr<const TerrainMap> terrain = nullptr);
 
   /// The program.
   const optimization::MathematicalProgram& program() const { return prog_; }

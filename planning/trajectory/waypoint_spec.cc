@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
 #include <cairn/common/number_text.h>
@@ -11,10 +13,58 @@
 namespace cairn::planning {
 
 namespace {
-multibody::Pose SolePose(const FootPose& foot) {
-  return multibody::Pose(Eigen::AngleAxisd(foot.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix(),
-                         Eigen::Vector3d(foot.x, foot.y, foot.z));
+// The unit normal of the plane h = a + b dx + c dy fitted to the ground heights of the cells whose centres lie in
+// the sole's rectangle, or nothing when the fit is not determined.
+std::optional<Eigen::Vector3d> FootprintNormal(const FootPose& foot, const TerrainMap& terrain, double length,
+                                               double width) {
+  const Eigen::Vector2d centre(foot.x, foot.y), along(std::cos(foot.theta), std::sin(foot.theta));
+  const Eigen::Vector2d across(-along.y(), along.x());
+  const double reach = 0.5 * std::hypot(length, width);
+  int col_lo = 0, row_lo = 0, col_hi = 0, row_hi = 0;
+  const Eigen::Vector2d lo = (centre.array() - reach).max(terrain.min_corner().array());
+  const Eigen::Vector2d hi = (centre.array() + reach).min(terrain.max_corner().array() - 1e-9);
+  if (!(lo.array() <= hi.array()).all() || !terrain.CellAt(lo.x(), lo.y(), &col_lo, &row_lo) ||
+      !terrain.CellAt(hi.x(), hi.y(), &col_hi, &row_hi)) {
+    return std::nullopt;
+  }
+  Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (int row = row_lo; row <= row_hi; ++row) {
+    for (int col = col_lo; col <= col_hi; ++col) {
+      if (!terrain.has_ground(col, row)) continue;
+      const Eigen::Vector2d d = terrain.CellCenter(col, row) - centre;
+      if (std::abs(d.dot(along)) > 0.5 * length || std::abs(d.dot(across)) > 0.5 * width) continue;
+      const Eigen::Vector3d a(1.0, d.x(), d.y());
+      normal_matrix += a * a.transpose();
+      rhs += a * terrain.height(col, row);
+      ++count;
+    }
+  }
+  if (count < 3) return std::nullopt;
+  const Eigen::LDLT<Eigen::Matrix3d> solve(normal_matrix);
+  // Cells on one line leave the slope across it undetermined.
+  if (solve.info() != Eigen::Success || !(std::abs(solve.vectorD().minCoeff()) > 1e-9 * normal_matrix.trace())) {
+    return std::nullopt;
+  }
+  const Eigen::Vector3d plane = solve.solve(rhs);
+  return Eigen::Vector3d(-plane(1), -plane(2), 1.0).normalized();
 }
+}  // namespace
+
+multibody::Pose SoleTargetPose(const FootPose& foot, const TerrainMap* terrain, double sole_length,
+                               double sole_width) {
+  const Eigen::Matrix3d yaw = Eigen::AngleAxisd(foot.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  Eigen::Matrix3d tilt = Eigen::Matrix3d::Identity();
+  if (terrain != nullptr) {
+    if (const auto normal = FootprintNormal(foot, *terrain, sole_length, sole_width)) {
+      tilt = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), *normal).toRotationMatrix();
+    }
+  }
+  return multibody::Pose(tilt * yaw, Eigen::Vector3d(foot.x, foot.y, foot.z));
+}
+
+namespace {
 
 double Cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
@@ -64,8 +114,10 @@ void SetPolygon(const std::vector<FootPose>& feet, const TrajectoryOptimizerOpti
   }
 }
 
-WaypointContact Contact(FootSide side, const FootPose& foot, const TrajectoryOptimizerOptions& options) {
-  return {side == FootSide::kLeft ? options.left_sole_frame : options.right_sole_frame, side, SolePose(foot)};
+WaypointContact Contact(FootSide side, const FootPose& foot, const TrajectoryOptimizerOptions& options,
+                        const TerrainMap* terrain) {
+  return {side == FootSide::kLeft ? options.left_sole_frame : options.right_sole_frame, side,
+          SoleTargetPose(foot, terrain, options.sole_length, options.sole_width)};
 }
 
 const FootPose& Foot(const Stance& stance, FootSide side) {
@@ -73,7 +125,8 @@ const FootPose& Foot(const Stance& stance, FootSide side) {
 }
 }  // namespace
 
-std::vector<WaypointSpec> MakeWaypointSpecs(const FootstepPlan& plan, const TrajectoryOptimizerOptions& options) {
+std::vector<WaypointSpec> MakeWaypointSpecs(const FootstepPlan& plan, const TrajectoryOptimizerOptions& options,
+                                            const TerrainMap* terrain) {
   ValidateTrajectoryOptimizerOptions(options);
   if (!plan.found) {
     throw std::invalid_argument("MakeWaypointSpecs: the footstep plan was not found (" + plan.reason +
@@ -93,7 +146,8 @@ std::vector<WaypointSpec> MakeWaypointSpecs(const FootstepPlan& plan, const Traj
     start.time = t;
     start.stance = j;
     start.label = "stance " + FormatShort(j) + " start";
-    start.contacts = {Contact(FootSide::kLeft, stance.left, options), Contact(FootSide::kRight, stance.right, options)};
+    start.contacts = {Contact(FootSide::kLeft, stance.left, options, terrain),
+                      Contact(FootSide::kRight, stance.right, options, terrain)};
     if (j == num_steps) {
       SetPolygon({stance.left, stance.right}, options, &start);
       start.supports = {{options.left_sole_frame, 0.5}, {options.right_sole_frame, 0.5}};
@@ -118,7 +172,7 @@ std::vector<WaypointSpec> MakeWaypointSpecs(const FootstepPlan& plan, const Traj
     swing.stance = j;
     swing.single_support = true;
     swing.label = "stance " + FormatShort(j) + " mid-swing";
-    swing.contacts = {Contact(support, Foot(stance, support), options)};
+    swing.contacts = {Contact(support, Foot(stance, support), options, terrain)};
     SetPolygon({Foot(stance, support)}, options, &swing);
     swing.supports = {{support_frame, 1.0}};
     specs.push_back(swing);

@@ -68,6 +68,8 @@ WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_pt
   setup.start = scenario.start();
   setup.goal = scenario.goal();
   setup.environment = EnvironmentFromObstacles(scenario.obstacles());
+  // The scenario's terrain is exact: the swing feet keep their clearance from its slopes and treads.
+  setup.trajectory.ground_follows_terrain = true;
   setup.stabilizer = WalkingStabilizerOptions("fft");
   setup.robot = std::move(robot);
   setup.controller = std::move(controller);
@@ -83,6 +85,8 @@ WalkSetup WalkSetupFromScenario(const FootstepScenario& scenario, std::shared_pt
 WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* terrain_source,
                           systems::DiagramBuilder* builder) {
   const bool fixed_plan = setup.plan != nullptr;
+  const bool external_terrain = terrain_source != nullptr;
+  const systems::OutputPort* own_terrain = nullptr;  // the constant source of setup.terrain, once added
   if (fixed_plan) {
     if (!setup.plan->found) {
       throw std::invalid_argument("BuildWalkDiagram: the fixed plan has no steps to walk (" + setup.plan->reason +
@@ -115,6 +119,7 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
     if (terrain_source == nullptr) {
       terrain_source = &builder->AddNamedSystem<systems::ConstantValueSource<TerrainMap>>("terrain", *setup.terrain)
                             ->GetOutputPort("y0");
+      own_terrain = terrain_source;
     }
     auto* footsteps = builder->AddNamedSystem<FootstepPlanner>("footsteps", setup.cost_model, setup.geometry,
                                                                setup.planner, setup.refine_model, setup.objective);
@@ -145,6 +150,20 @@ WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* ter
   }
   builder->Connect(*walk.plan, trajectory->get_plan_input_port());
   builder->Connect(environment->GetOutputPort("y0"), trajectory->get_environment_input_port());
+  // The whole-body optimiser lays the soles on the ground the walk knows (tilted on slopes): the planner's own
+  // terrain. A perceived terrain (an external terrain_source) is not used for it: perceived footprints tilt the
+  // soles where the true ground is level, and the cloth mock-up's walk then falls at 2.6 s (measured 2026-12-07;
+  // docs/walk.md, "Slopes"). Without a known terrain the optimiser gets a map with no ground: level soles.
+  const systems::OutputPort* sole_ground = own_terrain;
+  if (sole_ground == nullptr) {
+    sole_ground = &builder
+                       ->AddNamedSystem<systems::ConstantValueSource<TerrainMap>>(
+                           "sole_ground", external_terrain || setup.terrain == nullptr
+                                              ? TerrainMap(Eigen::Vector2d::Zero(), 1, 1, 1.0)
+                                              : *setup.terrain)
+                       ->GetOutputPort("y0");
+  }
+  builder->Connect(*sole_ground, trajectory->get_terrain_input_port());
   builder->Connect(trajectory->get_trajectory_output_port(), stabilizer->get_trajectory_input_port());
   builder->Connect(stabilizer->get_reference_output_port(), player->get_reference_input_port());
   if (setup.feedback) {

@@ -112,7 +112,9 @@ WalkDiagram BuildWalkDiagram(const WalkSetup& setup);
 /// The walk's blocks added to a larger diagram under construction (the main diagram puts perception in front):
 /// as BuildWalkDiagram, but the footstep planner's terrain comes from `terrain_source` (a TerrainMap output of a
 /// system already in `builder`; null: a constant source of setup.terrain, which may then not be null; it must be
-/// null with a fixed plan). The
+/// null with a fixed plan). The whole-body optimiser lays its soles on setup.terrain (tilted on slopes) when the
+/// planner plans on it or the plan is fixed, and level on a `terrain_source` (perceived ground is not trusted for
+/// that yet; docs/walk.md, "Slopes"). The
 /// returned diagram pointer is empty: the caller builds and owns the diagram and stores it there.
 WalkDiagram AddWalkBlocks(const WalkSetup& setup, const systems::OutputPort* terrain_source,
                           systems::DiagramBuilder* builder);

@@ -19,6 +19,7 @@
 #include "cairn/planning/trajectory/optimize_whole_body_trajectory.h"
 #include "cairn/planning/trajectory/trajectory_optimizer.h"
 #include "cairn/planning/trajectory/trajectory_optimizer_options.h"
+#include "cairn/planning/trajectory/waypoint_spec.h"
 #include "cairn/planning/trajectory/whole_body_trajectory.h"
 
 namespace cairn::python {
@@ -58,6 +59,8 @@ void DefinePlanningTrajectory(py::module_ m) {
       .def_readwrite("posture_weight", &TrajectoryOptimizerOptions::posture_weight, "Posture weight.")
       .def_readwrite("com_margin", &TrajectoryOptimizerOptions::com_margin, "COM margin, m.")
       .def_readwrite("ground_height", &TrajectoryOptimizerOptions::ground_height, "Ground plane, m (NaN: none).")
+      .def_readwrite("ground_follows_terrain", &TrajectoryOptimizerOptions::ground_follows_terrain,
+                     "With a terrain: the ground term follows its cells' planes instead of the level plane.")
       .def_readwrite("solver", &TrajectoryOptimizerOptions::solver, "Solver name (MakeSolver).")
       .def_readwrite("hessian", &TrajectoryOptimizerOptions::hessian,
                      "Ipopt's Hessian: 'exact', 'gauss-newton' or 'limited-memory'.")
@@ -104,19 +107,25 @@ void DefinePlanningTrajectory(py::module_ m) {
   m.def(
       "OptimizeWholeBodyTrajectory",
       [](const multibody::Model& model, const FootstepPlan& plan, const std::vector<EnvironmentBox>& environment,
-         const TrajectoryOptimizerOptions& options) {
+         const TrajectoryOptimizerOptions& options, const TerrainMap* terrain) {
         auto shared = std::make_shared<const multibody::Model>(model);
         py::gil_scoped_release release;
-        return OptimizeWholeBodyTrajectory(std::move(shared), plan, environment, options);
+        return OptimizeWholeBodyTrajectory(std::move(shared), plan, environment, options, terrain);
       },
       py::arg("model"), py::arg("plan"), py::arg("environment") = std::vector<EnvironmentBox>(),
-      py::arg("options") = TrajectoryOptimizerOptions(),
-      "Solves problem (2.9) for a footstep plan (a copy of the model is kept for the call).");
+      py::arg("options") = TrajectoryOptimizerOptions(), py::arg("terrain") = nullptr,
+      "Solves problem (2.9) for a footstep plan (a copy of the model is kept for the call); a `terrain` tilts the "
+      "sole targets to its normals.");
+  m.def("SoleTargetPose", &SoleTargetPose, py::arg("foot"), py::arg("terrain") = nullptr, py::arg("sole_length") = 0.24,
+        py::arg("sole_width") = 0.14,
+        "The sole pose the whole-body problem targets for a FootPose: its yaw, tilted onto the plane fitted to the "
+        "terrain's heights under the sole (level without a terrain).");
 
   py::class_<TrajectoryOptimizer, systems::LeafSystem>(
       m, "TrajectoryOptimizer",
-      "System: inputs `plan` (FootstepPlan), `environment` (list of EnvironmentBox); output `trajectory` "
-      "(WholeBodyTrajectory), solved at initialization, on forced events and every `period` s when positive.")
+      "System: inputs `plan` (FootstepPlan), `environment` (list of EnvironmentBox), optional `terrain` "
+      "(TerrainMap: tilts the soles to its normals); output `trajectory` (WholeBodyTrajectory), solved at "
+      "initialization, on forced events and every `period` s when positive.")
       .def(py::init([](const multibody::Model& model, const TrajectoryOptimizerOptions& options, double period) {
              return std::make_unique<TrajectoryOptimizer>(std::make_shared<const multibody::Model>(model), options,
                                                           period);
@@ -126,6 +135,8 @@ void DefinePlanningTrajectory(py::module_ m) {
       .def("get_plan_input_port", PortGetter(&TrajectoryOptimizer::get_plan_input_port), "Input `plan`.")
       .def("get_environment_input_port", PortGetter(&TrajectoryOptimizer::get_environment_input_port),
            "Input `environment`.")
+      .def("get_terrain_input_port", PortGetter(&TrajectoryOptimizer::get_terrain_input_port),
+           "Input `terrain` (optional).")
       .def("get_trajectory_output_port", PortGetter(&TrajectoryOptimizer::get_trajectory_output_port),
            "Output `trajectory`.");
 

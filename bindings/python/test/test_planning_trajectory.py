@@ -102,3 +102,32 @@ def test_the_system_solves_in_an_event_and_reports_failures_by_name(model):
         bad.d_safe = -1.0
         planning.TrajectoryOptimizer(model, bad)
     assert math.isfinite(after.report.seconds)
+
+
+def slope(degrees):
+    a = math.radians(degrees)
+    terrain = planning.TerrainMap(np.array([-1.0, -1.0]), 40, 40, 0.05)
+    for row in range(terrain.rows()):
+        for col in range(terrain.cols()):
+            terrain.SetCell(col, row, terrain.CellCenter(col, row)[0] * math.tan(a),
+                            np.array([-math.sin(a), 0.0, math.cos(a)]), 1.0)
+    return terrain
+
+
+def test_on_a_terrain_the_soles_are_laid_on_its_slope(model):
+    terrain = slope(10.0)
+    normal = np.array([-math.sin(math.radians(10.0)), 0.0, math.cos(math.radians(10.0))])
+    level = planning.SoleTargetPose(planning.FootPose(x=0.1, y=0.1))
+    assert np.allclose(level.rotation(), np.eye(3))
+    tilted = planning.SoleTargetPose(planning.FootPose(x=0.1, y=0.1), terrain)
+    assert np.allclose(tilted.rotation()[:, 2], normal, atol=1e-6)
+    plan = one_step_plan()
+    plan.steps[0].pose = planning.FootPose(x=0.15, y=-0.1, z=0.15 * math.tan(math.radians(10.0)))
+    trajectory = planning.OptimizeWholeBodyTrajectory(model, plan, terrain=terrain)
+    assert trajectory.found, trajectory.report.message
+    data = mb.Data(model)
+    mb.ForwardKinematics(model, data, trajectory.waypoints[-1].q)
+    assert np.allclose(mb.FramePose(model, data, "r_sole").rotation()[:, 2], normal, atol=1e-3)
+    # The system takes the terrain on an optional input port.
+    system = planning.TrajectoryOptimizer(model)
+    assert system.get_terrain_input_port().get_name() == "terrain"

@@ -44,6 +44,77 @@ TEST(WaypointSpecTest, AlternatesDoubleAndSingleSupportWithThePersistingFootAsSu
                            "step 1 has t_ds = 0.2 s and t_sw = 0 s");
 }
 
+// A 10-degree slope rising along +x (thesis Fig. 2.8), 2 m x 2 m around the origin.
+TerrainMap Slope(double degrees) {
+  const double a = degrees * M_PI / 180.0;
+  TerrainMap terrain(Eigen::Vector2d(-1.0, -1.0), 40, 40, 0.05);
+  for (int row = 0; row < terrain.rows(); ++row) {
+    for (int col = 0; col < terrain.cols(); ++col) {
+      terrain.SetCell(col, row, terrain.CellCenter(col, row).x() * std::tan(a),
+                      Eigen::Vector3d(-std::sin(a), 0.0, std::cos(a)), 1.0);
+    }
+  }
+  return terrain;
+}
+
+// On a slope the sole targets lie on the ground (their z axis is its normal) with the plan's heading kept; where
+// the map has no ground, and without a map, they are level.
+TEST(WaypointSpecTest, SoleTargetsLieOnTheTerrainsNormal) {
+  const TerrainMap slope = Slope(10.0);
+  const Eigen::Vector3d normal(-std::sin(10.0 * M_PI / 180.0), 0.0, std::cos(10.0 * M_PI / 180.0));
+  const FootstepPlan plan = test::StraightPlan(2, 0.2);
+  const auto level = MakeWaypointSpecs(plan, TrajectoryOptimizerOptions());
+  const auto tilted = MakeWaypointSpecs(plan, TrajectoryOptimizerOptions(), &slope);
+  ASSERT_EQ(level.size(), tilted.size());
+  for (std::size_t t = 0; t < tilted.size(); ++t) {
+    for (std::size_t c = 0; c < tilted[t].contacts.size(); ++c) {
+      const Eigen::Matrix3d R = tilted[t].contacts[c].X_WF.rotation();
+      EXPECT_LT((R.col(2) - normal).norm(), 1e-6) << tilted[t].label;
+      EXPECT_NEAR(std::atan2(R(1, 0), R(0, 0)), 0.0, 1e-9);  // heading kept
+      EXPECT_TRUE(level[t].contacts[c].X_WF.rotation().isIdentity(1e-12));
+      EXPECT_EQ(tilted[t].contacts[c].X_WF.translation(), level[t].contacts[c].X_WF.translation());
+    }
+  }
+  // A turned foot keeps its heading: the sole's x axis projects onto the plan's yaw.
+  const FootPose turned{0.3, 0.0, 0.0, 0.5};
+  const Eigen::Matrix3d R = SoleTargetPose(turned, &slope).rotation();
+  EXPECT_LT((R.col(2) - normal).norm(), 1e-6);
+  EXPECT_NEAR(std::atan2(R(1, 0), R(0, 0)), 0.5, 0.02);
+  // Off the map: level.
+  EXPECT_TRUE(SoleTargetPose({5.0, 0.0, 0.0, 0.0}, &slope).rotation().isIdentity(1e-12));
+  // The fit spans the footprint: level ground whose cells alternate 5 mm up and down, each with a normal tilted
+  // 10 degrees (as perceived cells may be), lays the sole within a degree of level.
+  TerrainMap noisy(Eigen::Vector2d(-1.0, -1.0), 40, 40, 0.05);
+  for (int row = 0; row < noisy.rows(); ++row) {
+    for (int col = 0; col < noisy.cols(); ++col) {
+      noisy.SetCell(col, row, (col + row) % 2 == 0 ? 0.005 : -0.005, normal, 1.0);
+    }
+  }
+  EXPECT_GT(SoleTargetPose({0.0, 0.0, 0.0, 0.0}, &noisy).rotation()(2, 2), std::cos(M_PI / 180.0));
+}
+
+// The whole-body solve on the slope stands its soles on it: the solution meets the tilted targets.
+TEST(TrajectoryProblemTest, OnASlopeTheSolvedSolesLieOnTheGround) {
+  const TerrainMap slope = Slope(10.0);
+  FootstepPlan plan = test::StraightPlan(1, 0.2);
+  for (PlannedStep& step : plan.steps) step.pose.z = step.pose.x * std::tan(10.0 * M_PI / 180.0);
+  const TrajectoryOptimizerOptions options;
+  const WholeBodyTrajectory trajectory = OptimizeWholeBodyTrajectory(test::Humanoid(), plan, {}, options, &slope);
+  ASSERT_TRUE(trajectory.found) << trajectory.report.message;
+  const auto model = test::Humanoid();
+  const auto specs = MakeWaypointSpecs(plan, options, &slope);
+  ASSERT_EQ(trajectory.waypoints.size(), specs.size());
+  multibody::Data data(*model);
+  for (std::size_t t = 0; t < specs.size(); ++t) {
+    multibody::ForwardKinematics(*model, data, trajectory.waypoints[t].q);
+    for (const WaypointContact& c : specs[t].contacts) {
+      const Eigen::Matrix3d R = multibody::FramePose(*model, data, model->GetFrameIndex(c.frame)).rotation();
+      EXPECT_LT((R.col(2) - c.X_WF.rotation().col(2)).norm(), 1e-3) << specs[t].label << " " << c.frame;
+      EXPECT_GT(R(2, 0), 0.1);  // the toe points uphill
+    }
+  }
+}
+
 TEST(TrajectoryProblemTest, EveryCostAndConstraintHasExactGradientsAtTheWarmStart) {
   const auto model = test::Humanoid();
   TrajectoryOptimizerOptions options;

@@ -216,6 +216,66 @@ TEST(CollisionPenaltyTest, PenalisesABarAtTheHeadWithAnExactGradient) {
   EXPECT_EQ(penalty.Eval(away)(0), 0.0);
 }
 
+// Over a terrain the ground term follows its cells: on a uniform 20-degree slope the clearance is each support
+// point's distance from the slope's plane (checked against the box corners directly), its gradient is exact, a
+// level terrain at 0.3 m agrees with the plane at 0.3 m, and off the map the ground_height plane applies.
+TEST(CollisionPenaltyTest, TheGroundFollowsATerrain) {
+  const auto model = Humanoid();
+  const double a = 20.0 * M_PI / 180.0;
+  const Eigen::Vector3d n(-std::sin(a), 0.0, std::cos(a));
+  auto slope = std::make_shared<TerrainMap>(Eigen::Vector2d(-2.0, -2.0), 80, 80, 0.05);
+  auto level = std::make_shared<TerrainMap>(Eigen::Vector2d(-2.0, -2.0), 80, 80, 0.05);
+  for (int row = 0; row < 80; ++row) {
+    for (int col = 0; col < 80; ++col) {
+      slope->SetCell(col, row, slope->CellCenter(col, row).x() * std::tan(a), n, 1.0);
+      level->SetCell(col, row, 0.3, Eigen::Vector3d::UnitZ(), 1.0);
+    }
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const CollisionPenalty on_slope("ground", model, {}, {}, 0.025, 0.0, 0.0, nan, CollisionHessian::kDifferences,
+                                  slope);
+  Eigen::VectorXd q = test::BentKneePosture(*model);
+  q(2) = 0.85;
+  multibody::Data data(*model);
+  multibody::ForwardKinematics(*model, data, q);
+  double expected = std::numeric_limits<double>::infinity();
+  for (int b = 1; b < model->num_bodies(); ++b) {
+    for (const multibody::Geometry& g : model->body(b).collisions) {
+      if (g.type != multibody::GeometryType::kBox) continue;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d sign((corner & 1) ? 0.5 : -0.5, (corner & 2) ? 0.5 : -0.5, (corner & 4) ? 0.5 : -0.5);
+        const Eigen::Vector3d p = data.X_world[static_cast<std::size_t>(b)] * (g.X_BG * sign.cwiseProduct(g.size));
+        expected = std::min(expected, n.dot(p));
+      }
+    }
+  }
+  std::string which;
+  const double d = on_slope.MinimumEnvironmentDistance(q, &which);
+  EXPECT_LT(d, 0.1);  // the toes reach towards the slope rising ahead
+  // The map keeps heights and normals in single precision.
+  EXPECT_NEAR(d, expected, 1e-7) << which;  // (the lowest support point here is a box corner)
+  EXPECT_NE(which.find(" - ground"), std::string::npos) << which;
+  for (unsigned seed = 21; seed <= 23; ++seed) {
+    Eigen::VectorXd random = RandomPoint(seed);
+    random(2) = 0.6;
+    const auto check = CheckGradients(on_slope, random, 1e-5);
+    EXPECT_TRUE(check.passed) << check.ToString();
+  }
+  const CollisionPenalty on_level("ground", model, {}, {}, 0.025, 0.0, 0.0, nan, CollisionHessian::kDifferences,
+                                  level);
+  const CollisionPenalty plane("ground", model, {}, {}, 0.025, 0.0, 0.0, 0.3);
+  Eigen::VectorXd low = q;
+  low(2) = 0.3 + 0.83;
+  EXPECT_GT(plane.Eval(low)(0), 0.0);
+  EXPECT_NEAR(on_level.Eval(low)(0), plane.Eval(low)(0), 1e-7);
+  Eigen::VectorXd off_map = low;
+  off_map(0) = 5.0;
+  EXPECT_EQ(on_level.Eval(off_map)(0), 0.0);  // no ground there: ground_height is NaN
+  const CollisionPenalty fallback("ground", model, {}, {}, 0.025, 0.0, 0.0, 0.3, CollisionHessian::kDifferences,
+                                  level);
+  EXPECT_EQ(fallback.Eval(off_map)(0), plane.Eval(off_map)(0));
+}
+
 // Perceived space: a box that is there with probability p weighs its hinge by p, and the terrain's voxels become
 // such boxes.
 TEST(CollisionPenaltyTest, WeighsUncertainBoxesByTheirProbability) {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include <cairn/multibody/data.h>
 #include <cairn/multibody/kinematics.h>
 #include <cairn/multibody/urdf_parser.h>
 #include <cairn/planning/walk/walk_diagram.h>
@@ -123,6 +124,32 @@ double SoleDistance(const WalkSetup& setup, const WalkRecord& record, const Stan
   };
   return std::max(distance(setup.plant.sole_bodies.at(0), stance.left),
                   distance(setup.plant.sole_bodies.at(1), stance.right));
+}
+
+// Thesis 2.4.2's 10-degree slope: the whole-body problem lays the soles on the slope (the terrain's normals), so the
+// plant starts with both soles flat on it and walks the plan to its end. With level soles (before) each toe stood
+// 2.6 cm inside the slope, the plant pushed the robot downhill and it fell over its heels after 1 s.
+TEST(WalkDiagramTest, TheTenDegreeSlopeIsWalkedWithTheSolesOnIt) {
+  const FootstepScenario scenario =
+      FootstepScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/slope_10.yaml");
+  WalkSetup setup = SetupFor(scenario);
+  setup.planner.search.time_limit = 600.0;  // the scenario's 10 s wall-clock limit, as a budget of expansions
+  setup.planner.search.max_expansions = 20000;
+  WalkRunOptions options;
+  options.settle_time = 0.5;
+  const WalkRecord walked = RunWalk(BuildWalkDiagram(setup), options);
+  ASSERT_TRUE(walked.start.ready) << walked.start.reason;
+  ASSERT_GE(walked.plan.steps.size(), 8u);
+  const double a = 10.0 * M_PI / 180.0;
+  const Eigen::Vector3d normal(-std::sin(a), 0.0, std::cos(a));
+  multibody::Data data(*setup.robot);
+  multibody::ForwardKinematics(*setup.robot, data, walked.reference.q.front());
+  for (const char* sole : {"l_sole", "r_sole"}) {
+    const multibody::Pose X = multibody::FramePose(*setup.robot, data, setup.robot->GetFrameIndex(sole));
+    EXPECT_LT((X.rotation().col(2) - normal).norm(), 1e-3) << sole;
+  }
+  EXPECT_FALSE(walked.fell) << walked.fall_reason << " at " << walked.duration << " s";
+  EXPECT_GT(walked.plan.StanceAfter(static_cast<int>(walked.plan.steps.size()) - 1).left.z, 0.35);  // it climbed
 }
 
 // The plant's verdict on the flat 3 m plan (examples/scenarios/flat.yaml, 15 steps of about 1.2 s, issue 16's first
