@@ -37,6 +37,26 @@ WalkSetup SetupFor(const FootstepScenario& scenario) {
                                test::SharedWalkingModel(), WalkingObjective::kComWorkPlusHeat, robot, controller);
 }
 
+// A scenario shipped in examples/scenarios.
+FootstepScenario Shipped(const std::string& name) {
+  return FootstepScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/" + name);
+}
+
+// A shipped scenario's walk with the planner's 10 s wall-clock limit replaced by a budget of expansions, so the
+// plan does not depend on the machine's load.
+WalkSetup ShippedWalkSetup(const FootstepScenario& scenario) {
+  WalkSetup setup = SetupFor(scenario);
+  setup.planner.search.time_limit = 600.0;
+  setup.planner.search.max_expansions = 20000;
+  return setup;
+}
+
+WalkRunOptions HalfSecondSettling() {
+  WalkRunOptions options;
+  options.settle_time = 0.5;
+  return options;
+}
+
 // Flat ground, the goal 0.3 m ahead: a plan of a few steps under an expansion budget.
 WalkSetup ShortWalk() {
   const fs::path path = fs::temp_directory_path() / ("walk_diagram_" + std::to_string(::getpid()) + ".yaml");
@@ -130,14 +150,8 @@ double SoleDistance(const WalkSetup& setup, const WalkRecord& record, const Stan
 // plant starts with both soles flat on it and walks the plan to its end. With level soles (before) each toe stood
 // 2.6 cm inside the slope, the plant pushed the robot downhill and it fell over its heels after 1 s.
 TEST(WalkDiagramTest, TheTenDegreeSlopeIsWalkedWithTheSolesOnIt) {
-  const FootstepScenario scenario =
-      FootstepScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/slope_10.yaml");
-  WalkSetup setup = SetupFor(scenario);
-  setup.planner.search.time_limit = 600.0;  // the scenario's 10 s wall-clock limit, as a budget of expansions
-  setup.planner.search.max_expansions = 20000;
-  WalkRunOptions options;
-  options.settle_time = 0.5;
-  const WalkRecord walked = RunWalk(BuildWalkDiagram(setup), options);
+  const WalkSetup setup = ShippedWalkSetup(Shipped("slope_10.yaml"));
+  const WalkRecord walked = RunWalk(BuildWalkDiagram(setup), HalfSecondSettling());
   ASSERT_TRUE(walked.start.ready) << walked.start.reason;
   ASSERT_GE(walked.plan.steps.size(), 8u);
   const double a = 10.0 * M_PI / 180.0;
@@ -158,13 +172,9 @@ TEST(WalkDiagramTest, TheTenDegreeSlopeIsWalkedWithTheSolesOnIt) {
 // short of the goal, inside that tolerance). Unstabilised it falls in its second step; played open loop (no
 // feedback) the stabilised reference falls too.
 TEST(WalkDiagramTest, TheStabilisedFlatPlanIsWalkedToItsEndAndTheUnstabilisedOneFalls) {
-  const FootstepScenario scenario =
-      FootstepScenario::Load(std::string(CAIRN_SOURCE_DIR) + "/examples/scenarios/flat.yaml");
-  WalkSetup setup = SetupFor(scenario);
-  setup.planner.search.time_limit = 600.0;  // the scenario's 10 s wall-clock limit, as a budget of expansions
-  setup.planner.search.max_expansions = 20000;
-  WalkRunOptions options;
-  options.settle_time = 0.5;
+  const FootstepScenario scenario = Shipped("flat.yaml");
+  WalkSetup setup = ShippedWalkSetup(scenario);
+  const WalkRunOptions options = HalfSecondSettling();
   const WalkRecord walked = RunWalk(BuildWalkDiagram(setup), options);
   ASSERT_TRUE(walked.start.ready) << walked.start.reason;
   ASSERT_GE(walked.plan.steps.size(), 10u);
