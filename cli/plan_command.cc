@@ -194,7 +194,9 @@ int Run(const PlanArguments& args) {
     refine_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
 
-  const int whole_body = args.whole_body ? RunWholeBody(scenario, plan, terrain ? &*terrain : nullptr, args.json, out ? &*out : nullptr) : 0;
+  const int whole_body =
+      args.whole_body ? RunWholeBody(scenario, plan, terrain ? &*terrain : nullptr, args.json, out ? &*out : nullptr)
+                      : 0;
   if (out) {
     out->WriteFile("plan.png", PlanImagePng(*terrain, plan, scenario.goal(), geometry));
     out->WriteFile("plan.json", PlanJson(scenario, plan, objective, refine_ms, false, oracle.source()) + "\n");

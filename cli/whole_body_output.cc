@@ -142,7 +142,8 @@ int RunWholeBody(const planning::FootstepScenario& scenario, const planning::Foo
   const auto model = std::make_shared<const multibody::Model>(
       multibody::ParseUrdfFile(DataDirectory() + "/robots/cairn_humanoid.urdf", urdf));
   const std::vector<planning::EnvironmentBox> environment = planning::EnvironmentFromObstacles(scenario.obstacles());
-  const planning::WholeBodyTrajectory trajectory = planning::OptimizeWholeBodyTrajectory(model, plan, environment, WholeBodyOptions(), terrain);
+  const planning::WholeBodyTrajectory trajectory =
+      planning::OptimizeWholeBodyTrajectory(model, plan, environment, WholeBodyOptions(), terrain);
   if (out != nullptr) {
     out->WriteFile("trajectory.json", WholeBodyTrajectoryJson(trajectory) + "\n");
     out->WriteFile("trajectory.png", WholeBodyTrajectoryPng(*model, trajectory, environment));

@@ -202,7 +202,8 @@ def test_oracle_built_in_shards_matches_one_build(walking_model, tmp_path):
 
 def test_a_grid_fingerprint_names_its_values():
     grid = planning.OracleGrid()
-    grid.dx, grid.dy, grid.dz, grid.dtheta, grid.mu = [0.15, 0.25], [0.18, 0.24], [0.0, 0.05], [0.0, 0.5], [0.06, 0.12, 1.0]
+    grid.dx, grid.dy, grid.dz = [0.15, 0.25], [0.18, 0.24], [0.0, 0.05]
+    grid.dtheta, grid.mu = [0.0, 0.5], [0.06, 0.12, 1.0]
     assert grid.Fingerprint() == "55ac21ae5066908c"  # the C++ test's known answer
     grid.mu = [0.06, 0.12]
     assert grid.Fingerprint() != "55ac21ae5066908c"
